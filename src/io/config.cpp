@@ -1,0 +1,168 @@
+#include "io/config.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/config_override.hpp"
+#include "io/config_reader.hpp"
+
+namespace cortex {
+namespace {
+
+// Sections of the contract whose physics is not implemented yet: a clear error beats
+// silently ignoring them.
+const char* const kNotYetSupported[] = {"compartments", "species", "reaction", "filament_type",
+                                        "filaments", "boundary"};
+
+SimulationConfig readSimulation(const ConfigReader& r) {
+  SimulationConfig s;
+  s.seed = r.integer("seed", s.seed, 0, std::numeric_limits<std::int64_t>::max());
+  s.end_time = r.number("end_time", s.end_time, Range::nonNegative(), "s");
+  s.chemistry_window = r.number("chemistry_window", s.chemistry_window, Range::positive(), "s");
+  s.snapshot_interval = r.number("snapshot_interval", s.snapshot_interval, Range::positive(), "s");
+  s.checkpoint_interval = r.number("checkpoint_interval", 0.0, Range::nonNegative(), "s");
+  s.temperature = r.number("temperature", s.temperature, Range::positive(), "K");
+  if (s.end_time > 0 && s.end_time / s.chemistry_window > 1e9)
+    r.fail("chemistry_window", "is so small that the run would take more than 1e9 windows");
+  r.finish();
+  return s;
+}
+
+MinimizerSettings readMechanics(const ConfigReader& r) {
+  MinimizerSettings m;
+  const std::string kind = r.choice("minimizer", "cg", {"cg", "lbfgs"});
+  m.kind = kind == "lbfgs" ? MinimizerKind::kLbfgs : MinimizerKind::kConjugateGradient;
+  m.force_tolerance = r.number("force_tolerance", m.force_tolerance, Range::positive(), "pN");
+  m.max_iterations = r.integer("max_iterations", m.max_iterations, 1, 1'000'000'000);
+  m.max_step = r.number("max_step", m.max_step, Range::positive(), "nm");
+  r.finish();
+  return m;
+}
+
+void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::path& base_dir) {
+  m.shape = r.choice("shape", "sphere", {"sphere", "ellipsoid", "plane", "mesh"});
+  const bool generated = m.shape != "mesh";
+  if (m.shape != "mesh") {
+    const auto c = r.has("center") ? r.numbers("center", 3, Range{}, "nm") : std::vector<double>{0, 0, 0};
+    m.center = Vec3(c[0], c[1], c[2]);
+  }
+  if (m.shape == "sphere") {
+    m.radii = Vec3::Constant(r.requiredNumber("radius", Range::positive(), "nm"));
+    m.mesher = r.choice("mesher", "marching_tetrahedra", {"marching_tetrahedra", "icosphere"});
+  } else if (m.shape == "ellipsoid") {
+    const auto a = r.numbers("radii", 3, Range::positive(), "nm");
+    m.radii = Vec3(a[0], a[1], a[2]);
+  } else if (m.shape == "plane") {
+    const auto s = r.numbers("size", 2, Range::positive(), "nm");
+    m.size = {s[0], s[1]};
+  } else {
+    const std::string file = r.string("file", "");
+    if (file.empty()) r.fail("file", "is required for shape = \"mesh\" (an .obj or .ply file)");
+    m.file = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir / file;
+  }
+  if (m.shape == "plane" || m.shape == "mesh") r.choice("boundary", "fixed", {"fixed"});
+  if (generated) {
+    m.mesh_size = r.requiredNumber("mesh_size", Range::positive(), "nm");
+    const double extent = m.shape == "plane" ? std::min(m.size[0], m.size[1]) : m.radii.minCoeff();
+    if (m.mesh_size > extent)
+      r.fail("mesh_size", fmt::format("({:g} nm) must not exceed the membrane's smallest "
+                                      "radius or side ({:g} nm)", m.mesh_size, extent));
+  }
+}
+
+MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
+  MembraneMechanics m;
+  const Range any{};
+  m.bending_modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
+  m.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
+  m.curvature = r.choice("curvature", "signed", {"signed", "unsigned"}) == "signed"
+                    ? CurvatureEstimator::kSigned
+                    : CurvatureEstimator::kUnsigned;
+  const std::string model = r.choice("area_model", "global", {"global", "per_vertex", "none"});
+  m.area_model = model == "global" ? AreaModel::kGlobal
+                 : model == "per_vertex" ? AreaModel::kPerVertex : AreaModel::kNone;
+  m.area_modulus = r.schedule("area_modulus", model == "none" ? 0.0 : 400.0, Range::nonNegative(), "pN/nm");
+  if (model == "none" && !m.area_modulus.isZero())
+    r.fail("area_modulus", "is set but area_model = \"none\"");
+  m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
+  m.tension = r.schedule("tension", 0.0, any, "pN/nm");
+  if (!m.spontaneous_curvature.isZero() && m.curvature == CurvatureEstimator::kUnsigned)
+    r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
+
+  const char* volume_keys[] = {"volume_modulus", "reduced_volume", "target_volume"};
+  if (!closed) {
+    for (const char* k : volume_keys)
+      if (r.has(k)) r.fail(k, "an open membrane encloses no volume");
+    return m;
+  }
+  m.volume_modulus = r.schedule("volume_modulus", 0.0, Range::nonNegative(), "pN/nm^2");
+  m.reduced_volume = r.schedule("reduced_volume", std::nullopt, Range{0.0, 1.0, true, false}, "");
+  m.target_volume = r.schedule("target_volume", std::nullopt, Range::positive(), "nm^3");
+  if (m.reduced_volume.isSet() && m.target_volume.isSet())
+    r.fail("target_volume", "give either reduced_volume or target_volume, not both");
+  return m;
+}
+
+MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir) {
+  MembraneConfig m;
+  m.name = r.string("name", fmt::format("membrane{}", index));
+  if (m.name.empty() || m.name.find_first_of("/ \t") != std::string::npos)
+    r.fail("name", "must be non-empty without spaces or '/' (it names an HDF5 group)");
+  readShape(r, m, base_dir);
+  // Closedness of a loaded mesh is only known once it is read; sim/ checks it again.
+  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane");
+  m.remesh = r.boolean("remesh", false);
+  m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
+  m.max_size = r.number("max_size", m.mesh_size * 2.0, Range::positive(), "nm");
+  if (r.has("species")) r.fail("species", "membrane species are not supported yet in this version");
+  r.finish();
+  return m;
+}
+
+}  // namespace
+
+Config parseConfig(const std::string& text, const std::string& source,
+                   const std::filesystem::path& base_dir, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}: invalid TOML: {}", source, e.source().begin.line, e.description()));
+  }
+  for (const std::string& o : overrides) applyOverride(root, o);
+
+  Config c;
+  c.source = source;
+  std::ostringstream effective;
+  effective << root;
+  c.effective_toml = effective.str();
+
+  const ConfigReader r(root, source, "");
+  for (const char* k : kNotYetSupported)
+    if (r.has(k)) r.fail(k, "is not supported yet in this version of cortex (membrane mechanics only)");
+  if (auto s = r.table("simulation")) c.simulation = readSimulation(*s);
+  if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
+  const auto membranes = r.tableArray("membrane");
+  for (std::size_t i = 0; i < membranes.size(); ++i) {
+    c.membranes.push_back(readMembrane(membranes[i], i, base_dir));
+    for (std::size_t j = 0; j < i; ++j)
+      if (c.membranes[j].name == c.membranes[i].name)
+        membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
+  }
+  if (c.membranes.empty()) throw InputError(fmt::format("{}: no [[membrane]] given: nothing to simulate", source));
+  r.finish();
+  return c;
+}
+
+Config loadConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot open config file", file.string()));
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseConfig(text.str(), file.string(), file.parent_path(), overrides);
+}
+
+}  // namespace cortex

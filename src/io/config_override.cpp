@@ -1,0 +1,64 @@
+#include "io/config_override.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace cortex {
+namespace {
+
+std::vector<std::string> split(const std::string& path) {
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  return parts;
+}
+
+toml::node_view<toml::node> parseValue(const std::string& text, toml::table& holder) {
+  try {
+    holder = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{{"v", text}};  // a bare word: take it as a string
+  }
+  return holder["v"];
+}
+
+}  // namespace
+
+void applyOverride(toml::table& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  const std::string where = fmt::format("--set {}", assignment);
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(fmt::format("{}: expected key.path=value", where));
+  const std::vector<std::string> keys = split(assignment.substr(0, eq));
+  toml::table holder;
+  toml::node_view<toml::node> value = parseValue(assignment.substr(eq + 1), holder);
+
+  toml::node* current = &root;
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    const std::string& k = keys[i];
+    if (toml::table* t = current->as_table()) {
+      if (!t->contains(k)) t->insert(k, toml::table{});
+      current = t->get(k);
+    } else if (toml::array* a = current->as_array()) {
+      std::size_t index = 0;
+      const auto [ptr, ec] = std::from_chars(k.data(), k.data() + k.size(), index);
+      if (ec != std::errc() || ptr != k.data() + k.size())
+        throw InputError(fmt::format("{}: '{}' must be an index into an array", where, k));
+      if (index >= a->size())
+        throw InputError(fmt::format("{}: index {} is out of range (the array has {} entries)", where,
+                                     index, a->size()));
+      current = a->get(index);
+    } else {
+      throw InputError(fmt::format("{}: '{}' is a value, not a table", where, keys[i - 1]));
+    }
+  }
+  toml::table* parent = current->as_table();
+  if (!parent) throw InputError(fmt::format("{}: cannot set a key inside a non-table", where));
+  parent->insert_or_assign(keys.back(), *value.node());
+}
+
+}  // namespace cortex

@@ -1,0 +1,77 @@
+#include "io/xdmf.hpp"
+
+#include <fmt/format.h>
+
+#include <iterator>
+
+namespace cortex {
+namespace {
+
+// Membrane names come from the config, so they may hold characters XML reserves.
+std::string escapeXml(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    switch (c) {
+      case '&': escaped += "&amp;"; break;
+      case '<': escaped += "&lt;"; break;
+      case '>': escaped += "&gt;"; break;
+      case '"': escaped += "&quot;"; break;
+      case '\'': escaped += "&apos;"; break;
+      default: escaped += c;
+    }
+  }
+  return escaped;
+}
+
+void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const XdmfMembrane& membrane,
+                        const std::string& h5_name) {
+  // Heavy data stays in the HDF5 file; each DataItem names "file:/dataset".
+  const std::string data = escapeXml(
+      fmt::format("{}:{}/membranes/{}", h5_name, snapshotGroup(snapshot.index), membrane.name));
+  const std::int64_t n = membrane.vertices;
+  const std::int64_t m = membrane.triangles;
+  fmt::format_to(std::back_inserter(xml),
+                 R"(        <Grid Name="{name}" GridType="Uniform">
+          <Topology TopologyType="Triangle" NumberOfElements="{m}">
+            <DataItem Format="HDF" NumberType="Int" Precision="4" Dimensions="{m} 3">{data}/triangles</DataItem>
+          </Topology>
+          <Geometry GeometryType="XYZ">
+            <DataItem Format="HDF" NumberType="Float" Precision="8" Dimensions="{n} 3">{data}/vertices</DataItem>
+          </Geometry>
+          <Attribute Name="mean_curvature" AttributeType="Scalar" Center="Node">
+            <DataItem Format="HDF" NumberType="Float" Precision="8" Dimensions="{n}">{data}/mean_curvature</DataItem>
+          </Attribute>
+        </Grid>
+)",
+                 fmt::arg("name", escapeXml(membrane.name)), fmt::arg("m", m), fmt::arg("n", n),
+                 fmt::arg("data", data));
+}
+
+}  // namespace
+
+std::string snapshotGroup(std::int64_t index) { return fmt::format("/snapshots/{:06d}", index); }
+
+std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots, const std::string& h5_name) {
+  // Xdmf 2 rather than 3: ParaView's default XDMF reader handles it most reliably.
+  std::string xml = R"(<?xml version="1.0" ?>
+<!DOCTYPE Xdmf SYSTEM "Xdmf.dtd" []>
+<Xdmf Version="2.0">
+  <Domain>
+    <Grid Name="trajectory" GridType="Collection" CollectionType="Temporal">
+)";
+  for (const XdmfSnapshot& snapshot : snapshots) {
+    // "{}" prints the shortest text that reads back as the same double.
+    fmt::format_to(std::back_inserter(xml),
+                   "      <Grid Name=\"snapshot_{:06d}\" GridType=\"Collection\" "
+                   "CollectionType=\"Spatial\">\n        <Time Value=\"{}\"/>\n",
+                   snapshot.index, snapshot.time);
+    for (const XdmfMembrane& membrane : snapshot.membranes) {
+      appendMembraneGrid(xml, snapshot, membrane, h5_name);
+    }
+    xml += "      </Grid>\n";
+  }
+  xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  return xml;
+}
+
+}  // namespace cortex

@@ -1,0 +1,29 @@
+// One physical energy term: the only thing a new force has to implement.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace cortex {
+
+// Coordinates of every degree of freedom, and where to add the gradient (may be null
+// when only the energy is wanted). `version` changes whenever x changes, so terms that
+// share derived geometry can cache it.
+struct Evaluation {
+  const double* x = nullptr;
+  double* gradient = nullptr;
+  std::uint64_t version = 0;
+};
+
+class EnergyTerm {
+ public:
+  virtual ~EnergyTerm() = default;
+  // Name of the physical term ("bending", "area", ...) and of the object it acts on
+  // (a membrane's name); summary.json groups energies by both.
+  virtual const std::string& name() const = 0;
+  virtual const std::string& owner() const = 0;
+  // Returns the energy (pN·nm) and, if e.gradient is set, adds dE/dx (pN) to it.
+  virtual double evaluate(const Evaluation& e) = 0;
+};
+
+}  // namespace cortex

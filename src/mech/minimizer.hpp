@@ -1,0 +1,42 @@
+// Energy minimization to a force tolerance: nonlinear conjugate gradients or L-BFGS.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "mech/objective.hpp"
+
+namespace cortex {
+
+enum class MinimizerKind { kConjugateGradient, kLbfgs };
+
+struct MinimizerSettings {
+  MinimizerKind kind = MinimizerKind::kConjugateGradient;
+  double force_tolerance = 0.1;  // pN: converged when every |dE/dx_i| is below it
+  long max_iterations = 100000;
+  double max_step = 20.0;        // nm: largest move of any coordinate in one line search
+  int lbfgs_memory = 10;
+};
+
+struct MinimizationResult {
+  bool converged = false;
+  long iterations = 0;
+  double energy = 0.0;
+  double max_force = 0.0;  // pN
+  std::string stop_reason;
+};
+
+// Minimizes f starting from x (overwritten with the result). Throws RunError when the
+// energy or forces become NaN/inf or the energy runs away to -infinity.
+MinimizationResult minimize(Objective& f, Eigen::VectorXd& x, const MinimizerSettings& settings);
+
+namespace detail {
+MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const MinimizerSettings& s);
+MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettings& s);
+// Shared guards of both methods.
+void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* where);
+void checkBounded(double energy, const Eigen::VectorXd& x);
+double maxAbs(const Eigen::VectorXd& v);
+}  // namespace detail
+
+}  // namespace cortex

@@ -1,0 +1,27 @@
+#include "membrane/curvature.hpp"
+
+#include "membrane/membrane.hpp"
+
+namespace cortex {
+
+CurvatureAndDerivative meanCurvature(const Vec3& ga, const Vec3& gv, CurvatureEstimator estimator) {
+  if (estimator == CurvatureEstimator::kSigned) {
+    const double d = 2.0 * gv.squaredNorm();
+    const double h = ga.dot(gv) / d;
+    return {h, gv / d, (ga - 4.0 * h * gv) / d};
+  }
+  const double na = ga.norm(), nv = gv.norm();
+  const double h = na / (2.0 * nv);
+  return {h, ga / (2.0 * na * nv), -h * gv / (nv * nv)};
+}
+
+std::vector<double> vertexMeanCurvature(const MeshGeometry& g, const MeshTopology& topo,
+                                        CurvatureEstimator estimator) {
+  std::vector<double> h(topo.numVertices(), 0.0);
+  for (Index v = 0; v < topo.numVertices(); ++v)
+    if (!topo.on_boundary[v])
+      h[v] = meanCurvature(g.area_gradient[v], g.volume_gradient[v], estimator).H;
+  return h;
+}
+
+}  // namespace cortex

@@ -1,0 +1,31 @@
+// Discrete mean curvature at a vertex from the gradients of area and volume.
+//
+//   signed   (thesis eq. 2.8, Surface Evolver "star_perp"):  H = <gA, gV> / (2 <gV, gV>)
+//   unsigned (thesis eq. 2.9):                               H = |gA| / (2 |gV|)
+// Both give H = 1/R on a sphere of radius R with outward orientation.
+#pragma once
+
+#include <vector>
+
+#include "core/types.hpp"
+#include "mesh/geometry.hpp"
+
+namespace cortex {
+
+enum class CurvatureEstimator;
+
+struct CurvatureAndDerivative {
+  double H;
+  // dH/dx_p = J_A(p)^T alpha + J_V(p)^T beta, with J_A, J_V the Jacobians of the
+  // vertex's area and volume gradients with respect to x_p.
+  Vec3 alpha, beta;
+};
+
+CurvatureAndDerivative meanCurvature(const Vec3& area_gradient, const Vec3& volume_gradient,
+                                     CurvatureEstimator estimator);
+
+// Mean curvature of every vertex (zero on boundary vertices, where it is undefined).
+std::vector<double> vertexMeanCurvature(const MeshGeometry& g, const MeshTopology& topo,
+                                        CurvatureEstimator estimator);
+
+}  // namespace cortex

@@ -1,0 +1,67 @@
+// Half-edge surface mesh: connectivity only, plus the vertex positions it carries.
+//
+// Every triangle owns three half-edges (3f, 3f+1, 3f+2), each going tail -> tip,
+// counter-clockwise seen from outside. Edges on an open boundary get a twin half-edge
+// with face() == kNone, linked into boundary loops. Handles are plain indices; the
+// remesher (which edits connectivity) keeps them compact and reports the renumbering.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "mesh/triangle_soup.hpp"
+
+namespace cortex {
+
+inline constexpr Index kNone = -1;
+
+class SurfaceMesh {
+ public:
+  // Builds and validates the mesh: every edge shared by at most two consistently
+  // oriented triangles, every vertex a single fan, no repeated or unused vertex, no
+  // zero-area triangle. Throws InputError naming `source` on the first violation.
+  static SurfaceMesh fromSoup(const TriangleSoup& soup, const std::string& source);
+
+  Index numVertices() const { return static_cast<Index>(positions_.size()); }
+  Index numFaces() const { return static_cast<Index>(face_he_.size()); }
+  Index numHalfedges() const { return static_cast<Index>(he_tip_.size()); }
+  Index numEdges() const { return numHalfedges() / 2; }
+
+  Index tip(Index h) const { return he_tip_[h]; }
+  Index tail(Index h) const { return he_tip_[he_twin_[h]]; }
+  Index next(Index h) const { return he_next_[h]; }
+  Index prev(Index h) const { return he_prev_[h]; }
+  Index twin(Index h) const { return he_twin_[h]; }
+  Index face(Index h) const { return he_face_[h]; }
+  bool isBoundaryHalfedge(Index h) const { return he_face_[h] == kNone; }
+
+  // An outgoing half-edge of v; the boundary one when v lies on a boundary.
+  Index outgoing(Index v) const { return vertex_out_[v]; }
+  bool isBoundaryVertex(Index v) const { return isBoundaryHalfedge(vertex_out_[v]); }
+  // Next outgoing half-edge of the same vertex, turning around it.
+  Index rotate(Index h) const { return he_twin_[he_prev_[h]]; }
+  Index valence(Index v) const;
+
+  Index faceHalfedge(Index f) const { return face_he_[f]; }
+  Tri faceVertices(Index f) const;
+  std::vector<Tri> triangles() const;
+
+  bool isClosed() const { return num_boundary_halfedges_ == 0; }
+  Index eulerCharacteristic() const { return numVertices() - numEdges() + numFaces(); }
+
+  const std::vector<Vec3>& positions() const { return positions_; }
+  std::vector<Vec3>& positions() { return positions_; }
+
+  // Checks every connectivity invariant; throws std::logic_error on the first broken one.
+  // Cheap enough for tests and after every edit in debug builds.
+  void validate() const;
+
+ private:
+  std::vector<Vec3> positions_;
+  std::vector<Index> he_tip_, he_next_, he_prev_, he_twin_, he_face_;
+  std::vector<Index> vertex_out_, face_he_;
+  Index num_boundary_halfedges_ = 0;
+};
+
+}  // namespace cortex

@@ -1,0 +1,37 @@
+// Meshes shared by the tests: spheres and patches, optionally randomly perturbed.
+#pragma once
+
+#include <random>
+
+#include "mesh/icosphere.hpp"
+#include "mesh/planar_patch.hpp"
+#include "mesh/surface_mesh.hpp"
+
+namespace cortex::testing {
+
+inline void perturb(TriangleSoup& soup, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  for (Vec3& p : soup.positions) p += Vec3(u(rng), u(rng), u(rng));
+}
+
+inline SurfaceMesh sphereMesh(double radius, int subdivisions, double perturbation = 0.0,
+                              const Vec3& center = Vec3(0, 0, 0)) {
+  TriangleSoup soup = icosphere(center, radius, subdivisions);
+  if (perturbation > 0.0) perturb(soup, perturbation, 7);
+  return SurfaceMesh::fromSoup(soup, "test sphere");
+}
+
+inline SurfaceMesh patchMesh(double size, double edge, double perturbation = 0.0) {
+  TriangleSoup soup = planarPatch(Vec3(0, 0, 0), size, size, edge);
+  if (perturbation > 0.0) perturb(soup, perturbation, 11);
+  return SurfaceMesh::fromSoup(soup, "test patch");
+}
+
+inline std::vector<double> flatPositions(const SurfaceMesh& m) {
+  std::vector<double> x;
+  for (const Vec3& p : m.positions()) x.insert(x.end(), {p.x(), p.y(), p.z()});
+  return x;
+}
+
+}  // namespace cortex::testing
