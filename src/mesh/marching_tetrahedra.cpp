@@ -40,18 +40,20 @@ int det(const Offset& a, const Offset& b, const Offset& c) {
 
 Offset minus(const Offset& a, const Offset& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
-// Vertices no triangle uses are dropped and the triangles renumbered.
+// Vertices no triangle uses are dropped; the others keep their relative order.
 void dropUnreferencedVertices(TriangleSoup& soup) {
   std::vector<Index> new_index(soup.positions.size(), -1);
+  for (const Tri& t : soup.triangles) {
+    for (Index v : t) new_index[v] = 0;
+  }
   std::vector<Vec3> kept;
+  for (std::size_t v = 0; v < new_index.size(); ++v) {
+    if (new_index[v] < 0) continue;
+    new_index[v] = Index(kept.size());
+    kept.push_back(soup.positions[v]);
+  }
   for (Tri& t : soup.triangles) {
-    for (Index& v : t) {
-      if (new_index[v] < 0) {
-        new_index[v] = Index(kept.size());
-        kept.push_back(soup.positions[v]);
-      }
-      v = new_index[v];
-    }
+    for (Index& v : t) v = new_index[v];
   }
   soup.positions = std::move(kept);
 }
@@ -266,9 +268,12 @@ void smoothOnSurface(TriangleSoup& soup, const ImplicitSurface& surface, double 
       if (!(area > negligible_area)) continue;  // degenerate ring: no meaningful centroid
       Vec3 move = weighted / area - x[v];
       const Vec3 normal = surface.gradientAt(x[v]).normalized();
-      if (normal.allFinite()) move -= normal.dot(move) * normal;
+      if (!normal.allFinite()) continue;
+      move -= normal.dot(move) * normal;
       const Vec3 moved = surface.project(x[v] + move);
-      if (moved.allFinite()) next[v] = moved;
+      // Where the shape is thinner than the mesh resolves, projection can land on the
+      // opposite sheet (normal reversed) and fold the mesh: keep the vertex instead.
+      if (moved.allFinite() && surface.gradientAt(moved).dot(normal) > 0.0) next[v] = moved;
     }
     x.swap(next);
   }

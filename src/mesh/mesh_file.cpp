@@ -315,18 +315,20 @@ TriangleSoup readPly(const Path& path) {
   return soup;
 }
 
-// Vertices no triangle uses are dropped and the triangles renumbered.
+// Vertices no triangle uses are dropped; the others keep their relative order.
 void dropUnreferencedVertices(TriangleSoup& soup) {
   std::vector<Index> new_index(soup.positions.size(), -1);
+  for (const Tri& t : soup.triangles) {
+    for (Index v : t) new_index[v] = 0;
+  }
   std::vector<Vec3> kept;
+  for (std::size_t v = 0; v < new_index.size(); ++v) {
+    if (new_index[v] < 0) continue;
+    new_index[v] = Index(kept.size());
+    kept.push_back(soup.positions[v]);
+  }
   for (Tri& t : soup.triangles) {
-    for (Index& v : t) {
-      if (new_index[v] < 0) {
-        new_index[v] = Index(kept.size());
-        kept.push_back(soup.positions[v]);
-      }
-      v = new_index[v];
-    }
+    for (Index& v : t) v = new_index[v];
   }
   soup.positions = std::move(kept);
 }

@@ -51,8 +51,9 @@ TriangleSoup planarPatch(const Vec3& center, double Lx, double Ly, double target
     for (double s : stations.back()) soup.positions.push_back(corner + Vec3(Lx * s, y, 0.0));
   }
 
-  // Zip each pair of rows left to right, always advancing the row whose next point is
-  // nearer; ties advance the lower row, which makes both ends of a strip mirror images.
+  // Zip each pair of rows left to right; the next triangle is the one whose new side
+  // (between a row's current and next point) is centred further left. Comparing the next
+  // points alone would tie at the right end and sometimes emit a sliver there.
   for (int r = 0; r < rows; ++r) {
     const std::vector<double>& lo = stations[r];
     const std::vector<double>& up = stations[r + 1];
@@ -60,7 +61,7 @@ TriangleSoup planarPatch(const Vec3& center, double Lx, double Ly, double target
     std::size_t i = 0, j = 0;
     while (i + 1 < lo.size() || j + 1 < up.size()) {
       const bool advance_lower =
-          j + 1 == up.size() || (i + 1 < lo.size() && lo[i + 1] <= up[j + 1]);
+          j + 1 == up.size() || (i + 1 < lo.size() && lo[i] + lo[i + 1] <= up[j] + up[j + 1]);
       if (advance_lower) {
         soup.triangles.push_back({a0 + Index(i), a0 + Index(i + 1), b0 + Index(j)});
         ++i;

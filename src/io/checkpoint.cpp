@@ -1,0 +1,97 @@
+#include "io/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace cortex {
+namespace {
+
+constexpr const char* kFormat = "cortex checkpoint 1";
+
+std::vector<double> flatten(const std::vector<Vec3>& p) {
+  std::vector<double> x;
+  x.reserve(3 * p.size());
+  for (const Vec3& v : p) x.insert(x.end(), {v.x(), v.y(), v.z()});
+  return x;
+}
+
+}  // namespace
+
+void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const System& system) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    h5::File f = h5::File::create(tmp);
+    f.createGroups("/run");
+    f.setAttribute("/run", "format", std::string(kFormat));
+    f.setAttribute("/run", "config", header.config_toml);
+    f.setAttribute("/run", "config_source", header.config_source);
+    f.setAttribute("/run", "base_dir", header.base_dir);
+    f.setAttribute("/run", "next_snapshot", header.next_snapshot);
+    f.setAttribute("/run", "time", system.time());
+    f.setAttribute("/run", "step", system.step);
+    const RunCounters& c = system.counters;
+    f.setAttribute("/run", "minimizations", c.minimizations);
+    f.setAttribute("/run", "minimizer_iterations", c.minimizer_iterations);
+    f.setAttribute("/run", "unconverged_minimizations", c.unconverged_minimizations);
+    f.setAttribute("/run", "last_max_force", c.last_max_force);
+    f.setAttribute("/run", "mechanics_seconds", c.mechanics_seconds);
+    f.setAttribute("/run", "force_evaluations", system.forceField().forceEvaluations());
+    f.setAttribute("/run", "energy_evaluations", system.forceField().energyEvaluations());
+    for (const auto& m : system.membranes()) {
+      const std::string g = "/membranes/" + m->name();
+      const auto n = static_cast<hsize_t>(m->mesh().numVertices());
+      f.write(g + "/vertices", flatten(m->mesh().positions()), {n, 3});
+      std::vector<std::int32_t> tris;
+      for (const Tri& t : m->topology().triangles) tris.insert(tris.end(), t.begin(), t.end());
+      f.write(g + "/triangles", tris, {tris.size() / 3, 3});
+      std::vector<std::int8_t> fixed(m->fixedVertices().begin(), m->fixedVertices().end());
+      f.write(g + "/fixed", fixed);
+      f.write(g + "/vertex_area0", m->material().vertex_area0);
+      f.setAttribute(g, "initial_area", m->material().initial_area);
+      f.setAttribute(g, "initial_volume", m->material().initial_volume);
+    }
+    f.flush();
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+Checkpoint readCheckpoint(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file))
+    throw InputError(fmt::format("{}: no checkpoint to resume from", file.string()));
+  h5::File f = h5::File::openReadOnly(file);
+  if (!f.exists("/run") || f.attributeString("/run", "format") != kFormat)
+    throw InputError(fmt::format("{}: not a cortex checkpoint (or from an incompatible version)", file.string()));
+  Checkpoint cp;
+  cp.header.config_toml = f.attributeString("/run", "config");
+  cp.header.config_source = f.attributeString("/run", "config_source");
+  cp.header.base_dir = f.attributeString("/run", "base_dir");
+  cp.header.next_snapshot = f.attributeInt64("/run", "next_snapshot");
+  cp.time = f.attributeDouble("/run", "time");
+  cp.step = f.attributeInt64("/run", "step");
+  cp.counters.minimizations = f.attributeInt64("/run", "minimizations");
+  cp.counters.minimizer_iterations = f.attributeInt64("/run", "minimizer_iterations");
+  cp.counters.unconverged_minimizations = f.attributeInt64("/run", "unconverged_minimizations");
+  cp.counters.last_max_force = f.attributeDouble("/run", "last_max_force");
+  cp.counters.mechanics_seconds = f.attributeDouble("/run", "mechanics_seconds");
+  cp.force_evaluations = f.attributeInt64("/run", "force_evaluations");
+  cp.energy_evaluations = f.attributeInt64("/run", "energy_evaluations");
+  for (const std::string& name : f.children("/membranes")) {
+    const std::string g = "/membranes/" + name;
+    MembraneState s;
+    const std::vector<double> x = f.readDoubles(g + "/vertices");
+    for (std::size_t i = 0; i + 2 < x.size(); i += 3) s.mesh.positions.emplace_back(x[i], x[i + 1], x[i + 2]);
+    const std::vector<std::int32_t> t = f.readInt32(g + "/triangles");
+    for (std::size_t i = 0; i + 2 < t.size(); i += 3) s.mesh.triangles.push_back({t[i], t[i + 1], t[i + 2]});
+    const std::vector<std::int8_t> fixed = f.readInt8(g + "/fixed");
+    s.fixed.assign(fixed.begin(), fixed.end());
+    s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
+    s.material.initial_area = f.attributeDouble(g, "initial_area");
+    s.material.initial_volume = f.attributeDouble(g, "initial_volume");
+    cp.membranes.emplace(name, std::move(s));
+  }
+  return cp;
+}
+
+}  // namespace cortex

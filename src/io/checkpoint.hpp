@@ -1,0 +1,36 @@
+// checkpoint.h5: everything needed to continue a run bit-identically — the effective
+// config, the clock, the counters, and each membrane's mesh and reference state.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "sim/membrane_builder.hpp"
+#include "sim/system.hpp"
+
+namespace cortex {
+
+struct CheckpointHeader {
+  std::string config_toml;   // effective config (after --set overrides)
+  std::string config_source; // original file name, for messages
+  std::string base_dir;      // directory relative mesh paths resolve against
+  std::int64_t next_snapshot = 0;
+};
+
+struct Checkpoint {
+  CheckpointHeader header;
+  double time = 0.0;
+  std::int64_t step = 0;
+  RunCounters counters;
+  std::int64_t force_evaluations = 0, energy_evaluations = 0;
+  std::map<std::string, MembraneState> membranes;
+};
+
+// Writes atomically (a temporary file renamed over the old one), so a crash never
+// leaves a half-written checkpoint.
+void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const System& system);
+// Throws InputError if the file is missing or not a cortex checkpoint.
+Checkpoint readCheckpoint(const std::filesystem::path& file);
+
+}  // namespace cortex

@@ -1,0 +1,137 @@
+#include "io/run_driver.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <chrono>
+
+#include "core/error.hpp"
+#include "io/checkpoint.hpp"
+#include "io/config.hpp"
+#include "io/run_observer.hpp"
+#include "io/summary.hpp"
+#include "io/trajectory_writer.hpp"
+#include "sim/membrane_builder.hpp"
+#include "sim/simulation.hpp"
+
+namespace cortex {
+namespace {
+
+void setUpLogging(const std::filesystem::path& outdir, bool append) {
+  auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
+  console->set_pattern("%^%l%$: %v");
+  console->set_level(spdlog::level::warn);
+  auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((outdir / "cortex.log").string(), !append);
+  file->set_pattern("[%Y-%m-%d %H:%M:%S.%e] %l: %v");
+  auto logger = std::make_shared<spdlog::logger>("cortex", spdlog::sinks_init_list{console, file});
+  logger->set_level(spdlog::level::debug);
+  logger->flush_on(spdlog::level::info);
+  spdlog::set_default_logger(logger);
+}
+
+std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* restored) {
+  std::vector<std::unique_ptr<Membrane>> membranes;
+  for (const MembraneConfig& mc : config.membranes) {
+    std::optional<MembraneState> state;
+    if (restored) {
+      auto it = restored->membranes.find(mc.name);
+      if (it == restored->membranes.end())
+        throw InputError(fmt::format("checkpoint has no membrane \"{}\"", mc.name));
+      state = it->second;
+    }
+    membranes.push_back(buildMembrane(mc, config.source, state));
+  }
+  return std::make_unique<System>(std::move(membranes));
+}
+
+void logThroughput(const System& system, double wall) {
+  const RunCounters& c = system.counters;
+  const std::int64_t evals = system.forceField().forceEvaluations();
+  const double per_s = c.mechanics_seconds > 0 ? evals / c.mechanics_seconds : 0.0;
+  spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s "
+               "({:.0f} force evaluations/s, {:.3g} vertex-gradient evaluations/s); wall {:.2f} s",
+               c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s,
+               per_s * system.numVertices(), wall);
+  if (c.unconverged_minimizations > 0)
+    spdlog::warn("{} of {} minimizations stopped before reaching the force tolerance",
+                 c.unconverged_minimizations, c.minimizations);
+}
+
+}  // namespace
+
+void runSimulation(const RunRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  omp_set_num_threads(std::max(1, request.threads));
+  const bool resume = !request.resume_dir.empty();
+  std::vector<std::string> overrides = request.overrides;
+  if (request.seed) overrides.push_back(fmt::format("simulation.seed={}", *request.seed));
+
+  std::optional<Checkpoint> checkpoint;
+  Config config;
+  std::filesystem::path outdir;
+  CheckpointHeader header;
+  if (resume) {
+    outdir = request.resume_dir;
+    checkpoint = readCheckpoint(outdir / "checkpoint.h5");
+    header = checkpoint->header;
+    config = parseConfig(header.config_toml, header.config_source, header.base_dir, overrides);
+  } else {
+    config = loadConfig(request.config, overrides);
+    outdir = request.output_dir.empty() ? std::filesystem::path(request.config.stem().string() + "_out")
+                                        : request.output_dir;
+    header.config_source = request.config.string();
+    header.base_dir = request.config.parent_path().string();
+  }
+  header.config_toml = config.effective_toml;
+  std::error_code ec;
+  std::filesystem::create_directories(outdir, ec);
+  if (ec) throw InputError(fmt::format("{}: cannot create output folder: {}", outdir.string(), ec.message()));
+
+  setUpLogging(outdir, resume);
+  spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",
+               resume ? outdir.string() : request.config.string(), config.simulation.seed, request.threads,
+               request.threads == 1 ? "" : "s");
+  for (const MembraneConfig& mc : config.membranes)
+    if (mc.remesh)
+      spdlog::warn("membrane \"{}\": remesh = true is accepted but adaptive remeshing is not "
+                   "implemented in this version; the mesh keeps its connectivity", mc.name);
+
+  std::unique_ptr<System> system = buildSystem(config, checkpoint ? &*checkpoint : nullptr);
+  if (checkpoint) {
+    system->setTime(checkpoint->time);
+    system->step = checkpoint->step;
+    system->counters = checkpoint->counters;
+    system->forceField().restoreCounters(checkpoint->force_evaluations, checkpoint->energy_evaluations);
+  }
+  for (const auto& m : system->membranes())
+    spdlog::info("membrane \"{}\": {} vertices, {} triangles, {}", m->name(), m->mesh().numVertices(),
+                 m->mesh().numFaces(), m->isClosed() ? "closed" : "open (boundary fixed)");
+
+  TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume);
+  const bool live = !request.quiet && isatty(STDERR_FILENO);
+  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live);
+  Simulation simulation(*system, config.simulation, config.mechanics, observer);
+  simulation.run(!resume);
+  observer.finishProgress();
+
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeJsonAtomically(outdir / "summary.json",
+                      summarize(*system, {config.simulation.seed, request.threads, wall}));
+  logThroughput(*system, wall);
+  spdlog::info("finished at t = {:.6g} s; output in {}", system->time(), outdir.string());
+}
+
+std::string checkConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const Config config = loadConfig(file, overrides);
+  Index vertices = 0;
+  for (const MembraneConfig& mc : config.membranes) vertices += buildMembrane(mc, config.source)->mesh().numVertices();
+  return fmt::format("{}: ok ({} membrane{}, {} vertices, end_time {:g} s)", file.string(),
+                     config.membranes.size(), config.membranes.size() == 1 ? "" : "s", vertices,
+                     config.simulation.end_time);
+}
+
+}  // namespace cortex

@@ -1,0 +1,27 @@
+// Everything `cortex run` and `cortex check` do between parsing the command line and
+// returning: config, output folder, logging, writers, the loop, the summary.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cortex {
+
+struct RunRequest {
+  std::filesystem::path config;        // fresh run
+  std::filesystem::path resume_dir;    // or: continue the run in this folder
+  std::filesystem::path output_dir;    // fresh run; default <config stem>_out
+  std::vector<std::string> overrides;  // --set key.path=value
+  std::optional<std::int64_t> seed;    // --seed
+  int threads = 1;
+  bool quiet = false;                  // no progress line on the terminal
+};
+
+// Throws InputError (bad input) or RunError (failure during the run).
+void runSimulation(const RunRequest& request);
+// Validates a config (and builds its meshes) without running; returns a one-line report.
+std::string checkConfig(const std::filesystem::path& config, const std::vector<std::string>& overrides);
+
+}  // namespace cortex

@@ -1,0 +1,63 @@
+#include "io/run_observer.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+#include "sim/frame_builder.hpp"
+
+namespace cortex {
+
+OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader header,
+                               TrajectoryWriter& writer, double end_time, bool live_progress)
+    : outdir_(std::move(outdir)),
+      header_(std::move(header)),
+      writer_(writer),
+      end_time_(end_time),
+      live_(live_progress),
+      start_(std::chrono::steady_clock::now()),
+      last_report_(start_) {}
+
+void OutputObserver::onSnapshot(const System& system) {
+  writer_.write(makeFrame(system));
+  spdlog::debug("snapshot {} written at t = {:.6g} s", writer_.nextIndex() - 1, system.time());
+}
+
+void OutputObserver::onCheckpoint(const System& system) {
+  header_.next_snapshot = writer_.nextIndex();
+  writeCheckpoint(outdir_ / "checkpoint.h5", header_, system);
+}
+
+void OutputObserver::onWindow(const System& system, const MinimizationResult& result) {
+  const auto now = std::chrono::steady_clock::now();
+  if (start_sim_time_ < 0) start_sim_time_ = system.time();
+  const double wall = std::chrono::duration<double>(now - start_).count();
+  const bool done = system.time() >= end_time_;
+  const double since = std::chrono::duration<double>(now - last_report_).count();
+  // Terminal: refreshed twice a second; log file: a line every 30 s and at the end.
+  if (!done && since < (live_ ? 0.5 : 30.0)) return;
+  last_report_ = now;
+  const double progressed = system.time() - start_sim_time_;
+  const double eta = progressed > 0 ? wall * (end_time_ - system.time()) / progressed : 0.0;
+  const double evals_per_s = system.counters.mechanics_seconds > 0
+                                 ? system.forceField().forceEvaluations() /
+                                       system.counters.mechanics_seconds
+                                 : 0.0;
+  const std::string line = fmt::format(
+      "t = {:.4g} / {:.4g} s | wall {:.1f} s | ETA {:.0f} s | {} iterations, max force {:.3g} pN | "
+      "{:.0f} force evaluations/s",
+      system.time(), end_time_, wall, eta, result.iterations, result.max_force, evals_per_s);
+  if (live_) {
+    std::fprintf(stderr, "\r%-120s", line.c_str());
+    std::fflush(stderr);
+  } else {
+    spdlog::info("{}", line);
+  }
+}
+
+void OutputObserver::finishProgress() {
+  if (live_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace cortex

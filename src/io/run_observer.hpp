@@ -1,0 +1,33 @@
+// The RunObserver of a real run: snapshots to trajectory.h5/.xdmf, checkpoints, and
+// progress in the log and on the terminal.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+
+#include "io/checkpoint.hpp"
+#include "io/trajectory_writer.hpp"
+#include "sim/simulation.hpp"
+
+namespace cortex {
+
+class OutputObserver final : public RunObserver {
+ public:
+  OutputObserver(std::filesystem::path outdir, CheckpointHeader header, TrajectoryWriter& writer,
+                 double end_time, bool live_progress);
+  void onSnapshot(const System& system) override;
+  void onCheckpoint(const System& system) override;
+  void onWindow(const System& system, const MinimizationResult& result) override;
+  void finishProgress();
+
+ private:
+  std::filesystem::path outdir_;
+  CheckpointHeader header_;
+  TrajectoryWriter& writer_;
+  double end_time_;
+  bool live_;
+  std::chrono::steady_clock::time_point start_, last_report_;
+  double start_sim_time_ = -1.0;
+};
+
+}  // namespace cortex

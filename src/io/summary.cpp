@@ -1,0 +1,65 @@
+#include "io/summary.hpp"
+
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace cortex {
+
+nlohmann::json summarize(System& system, const RunInfo& info) {
+  using nlohmann::json;
+  const std::vector<TermEnergy> energies = system.forceField().breakdown(system.coordinates());
+  json membranes = json::array();
+  for (const auto& m : system.membranes()) {
+    json energy = {{"bending", 0.0}, {"area", 0.0}, {"tension", 0.0}, {"volume", 0.0}};
+    double total = 0.0;
+    for (const TermEnergy& e : energies)
+      if (e.owner == m->name()) {
+        energy[e.name] = e.energy;
+        total += e.energy;
+      }
+    energy["total"] = total;
+    const MeshGeometry g = m->currentGeometry();
+    json entry = {{"name", m->name()},
+                  {"vertices", m->mesh().numVertices()},
+                  {"triangles", m->mesh().numFaces()},
+                  {"area", g.area},
+                  {"energy", energy},
+                  {"species", json::object()}};
+    if (m->isClosed()) {
+      entry["volume"] = g.volume;
+      entry["reduced_volume"] = g.volume / sphereVolumeOfArea(g.area);
+    } else {
+      entry["volume"] = nullptr;  // an open patch encloses no volume
+    }
+    membranes.push_back(entry);
+  }
+  const RunCounters& c = system.counters;
+  const ForceField& ff = system.forceField();
+  return {{"time", system.time()},
+          {"wall_seconds", info.wall_seconds},
+          {"seed", info.seed},
+          {"threads", info.threads},
+          {"membranes", membranes},
+          {"filaments", {{"count", 0}, {"total_length", 0.0}, {"energy", {{"total", 0.0}}}}},
+          {"chemistry", {{"events", 0}, {"species", json::object()}}},
+          {"mechanics",
+           {{"minimizations", c.minimizations},
+            {"minimizer_iterations", c.minimizer_iterations},
+            {"unconverged_minimizations", c.unconverged_minimizations},
+            {"last_max_force", c.last_max_force},
+            {"force_evaluations", ff.forceEvaluations()},
+            {"energy_evaluations", ff.energyEvaluations()}}}};
+}
+
+void writeJsonAtomically(const std::filesystem::path& file, const nlohmann::json& json) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << json.dump(2) << '\n';
+    if (!out) throw RunError("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+}  // namespace cortex

@@ -1,0 +1,65 @@
+#include "sim/membrane_builder.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "core/error.hpp"
+#include "mesh/icosphere.hpp"
+#include "mesh/implicit_shapes.hpp"
+#include "mesh/marching_tetrahedra.hpp"
+#include "mesh/mesh_file.hpp"
+#include "mesh/planar_patch.hpp"
+
+namespace cortex {
+
+TriangleSoup initialMesh(const MembraneConfig& c) {
+  if (c.shape == "sphere" && c.mesher == "icosphere")
+    return icosphere(c.center, c.radii[0], icosphereSubdivisionsFor(c.radii[0], c.mesh_size));
+  if (c.shape == "sphere") return meshImplicitSurface(implicitSphere(c.center, c.radii[0]), c.mesh_size);
+  if (c.shape == "ellipsoid") return meshImplicitSurface(implicitEllipsoid(c.center, c.radii), c.mesh_size);
+  if (c.shape == "plane") return planarPatch(c.center, c.size[0], c.size[1], c.mesh_size);
+  return readMeshFile(c.file);
+}
+
+namespace {
+
+void reverseOrientation(TriangleSoup& soup) {
+  for (Tri& t : soup.triangles) std::swap(t[1], t[2]);
+}
+
+}  // namespace
+
+std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::string& source,
+                                        const std::optional<MembraneState>& restored) {
+  const std::string where = fmt::format("{}: membrane \"{}\"", source, c.name);
+  TriangleSoup soup = restored ? restored->mesh : initialMesh(c);
+  const std::string mesh_source = c.shape == "mesh" && !restored ? c.file.string() : where;
+  SurfaceMesh mesh = SurfaceMesh::fromSoup(soup, mesh_source);
+
+  std::vector<char> fixed;
+  if (restored) {
+    fixed = restored->fixed;
+  } else {
+    fixed.resize(mesh.numVertices(), 0);
+    for (Index v = 0; v < mesh.numVertices(); ++v) fixed[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
+  }
+  auto membrane = std::make_unique<Membrane>(c.name, std::move(mesh), c.mechanics, fixed);
+
+  if (!restored && membrane->isClosed() && membrane->material().initial_volume < 0.0) {
+    // A closed mesh whose triangles face inwards: flip it rather than simulate inside-out.
+    spdlog::warn("{}: mesh triangles are oriented inwards; reversing them", where);
+    reverseOrientation(soup);
+    membrane = std::make_unique<Membrane>(c.name, SurfaceMesh::fromSoup(soup, mesh_source), c.mechanics, fixed);
+  }
+  if (!membrane->isClosed()) {
+    const MembraneMechanics& m = c.mechanics;
+    if (m.reduced_volume.isSet() || m.target_volume.isSet() || !m.volume_modulus.isZero())
+      throw InputError(fmt::format("{}: the mesh is open (has a boundary), so volume_modulus, "
+                                   "reduced_volume and target_volume cannot apply", where));
+  }
+  if (restored) membrane->setMaterial(restored->material);
+  membrane->setTime(0.0);
+  return membrane;
+}
+
+}  // namespace cortex

@@ -1,0 +1,47 @@
+// Typed parameters of a run, as parsed and validated by io/config.cpp. They live in
+// sim/ so that the simulation depends on parameters, never on the file format.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "mech/minimizer.hpp"
+#include "membrane/membrane.hpp"
+
+namespace cortex {
+
+struct SimulationConfig {
+  std::int64_t seed = 1;
+  double end_time = 0.0;            // s
+  double chemistry_window = 0.01;   // s between mechanical relaxations
+  double snapshot_interval = 0.1;   // s
+  double checkpoint_interval = 0.0; // s; 0 = at every snapshot
+  double temperature = 298.15;      // K
+};
+
+struct MembraneConfig {
+  std::string name;
+  std::string shape;   // sphere | ellipsoid | plane | mesh
+  std::string mesher;  // sphere: marching_tetrahedra | icosphere
+  Vec3 center = Vec3::Zero();
+  Vec3 radii = Vec3::Zero();           // sphere: all equal
+  std::array<double, 2> size{0, 0};    // plane
+  std::filesystem::path file;          // mesh
+  double mesh_size = 0.0;              // nm
+  MembraneMechanics mechanics;
+  bool remesh = false;
+  double min_size = 0.0, max_size = 0.0;  // nm
+};
+
+struct Config {
+  std::string source;                // file name for messages
+  std::string effective_toml;        // the table after --set overrides (stored in checkpoints)
+  SimulationConfig simulation;
+  MinimizerSettings mechanics;
+  std::vector<MembraneConfig> membranes;
+};
+
+}  // namespace cortex

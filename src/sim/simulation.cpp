@@ -1,0 +1,69 @@
+#include "sim/simulation.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace cortex {
+
+Simulation::Simulation(System& system, const SimulationConfig& simulation,
+                       const MinimizerSettings& mechanics, RunObserver& observer)
+    : system_(system), sim_(simulation), mech_(mechanics), observer_(observer) {}
+
+std::int64_t Simulation::totalWindows() const {
+  return static_cast<std::int64_t>(std::ceil(sim_.end_time / sim_.chemistry_window - 1e-9));
+}
+
+// Times come from the window index, never from accumulated sums, so a resumed run
+// sees exactly the same times as an uninterrupted one.
+double Simulation::timeOfWindow(std::int64_t k) const {
+  return std::min(static_cast<double>(k) * sim_.chemistry_window, sim_.end_time);
+}
+
+bool Simulation::crosses(double interval, std::int64_t k) const {
+  if (k == totalWindows()) return true;
+  auto slot = [&](std::int64_t j) { return std::floor(timeOfWindow(j) / interval + 1e-9); };
+  return slot(k) > slot(k - 1);
+}
+
+MinimizationResult Simulation::relax() {
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::VectorXd x = system_.coordinates();
+  const MinimizationResult r = minimize(system_.forceField(), x, mech_);
+  system_.setCoordinates(x);
+  RunCounters& c = system_.counters;
+  ++c.minimizations;
+  c.minimizer_iterations += r.iterations;
+  c.last_max_force = r.max_force;
+  c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.converged) {
+    ++c.unconverged_minimizations;
+    spdlog::warn("t = {:.6g} s: minimization stopped before convergence after {} iterations "
+                 "(max force {:.3g} pN > tolerance {:.3g} pN): {}",
+                 system_.time(), r.iterations, r.max_force, mech_.force_tolerance, r.stop_reason);
+  }
+  return r;
+}
+
+void Simulation::run(bool fresh) {
+  const double checkpoint_interval =
+      sim_.checkpoint_interval > 0 ? sim_.checkpoint_interval : sim_.snapshot_interval;
+  if (fresh) {
+    system_.step = 0;
+    system_.setTime(0.0);
+    observer_.onWindow(system_, relax());
+    observer_.onSnapshot(system_);
+    observer_.onCheckpoint(system_);
+  }
+  for (std::int64_t k = system_.step + 1; k <= totalWindows(); ++k) {
+    system_.setTime(timeOfWindow(k));
+    const MinimizationResult r = relax();
+    system_.step = k;
+    observer_.onWindow(system_, r);
+    if (crosses(sim_.snapshot_interval, k)) observer_.onSnapshot(system_);
+    if (crosses(checkpoint_interval, k)) observer_.onCheckpoint(system_);
+  }
+}
+
+}  // namespace cortex

@@ -1,0 +1,40 @@
+// The simulation loop: windows of (for now) scheduled targets followed by mechanical
+// relaxation, with snapshots and checkpoints on a schedule. Output goes through the
+// RunObserver interface, so this folder owns no file format.
+#pragma once
+
+#include "sim/run_config.hpp"
+#include "mech/minimizer.hpp"
+#include "sim/system.hpp"
+
+namespace cortex {
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void onSnapshot(const System&) {}
+  virtual void onCheckpoint(const System&) {}
+  virtual void onWindow(const System&, const MinimizationResult&) {}
+};
+
+class Simulation {
+ public:
+  Simulation(System& system, const SimulationConfig& simulation, const MinimizerSettings& mechanics,
+             RunObserver& observer);
+  // A fresh run relaxes the initial state and writes snapshot 0 first; a resumed run
+  // continues after system.step.
+  void run(bool fresh);
+  std::int64_t totalWindows() const;
+  double timeOfWindow(std::int64_t k) const;
+
+ private:
+  MinimizationResult relax();
+  bool crosses(double interval, std::int64_t k) const;
+
+  System& system_;
+  SimulationConfig sim_;
+  MinimizerSettings mech_;
+  RunObserver& observer_;
+};
+
+}  // namespace cortex

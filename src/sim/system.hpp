@@ -1,0 +1,51 @@
+// All simulation state in one object: the membranes, the force field over their
+// coordinates, the clock and the counters. Passed explicitly; no globals.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "mech/force_field.hpp"
+#include "membrane/membrane.hpp"
+
+namespace cortex {
+
+struct RunCounters {
+  std::int64_t minimizations = 0;
+  std::int64_t minimizer_iterations = 0;
+  std::int64_t unconverged_minimizations = 0;
+  double last_max_force = 0.0;  // pN, after the latest minimization
+  double mechanics_seconds = 0.0;
+};
+
+class System {
+ public:
+  // Takes ownership of the membranes, lays out their coordinates and builds the force field.
+  explicit System(std::vector<std::unique_ptr<Membrane>> membranes);
+
+  std::vector<std::unique_ptr<Membrane>>& membranes() { return membranes_; }
+  const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
+  ForceField& forceField() { return force_field_; }
+  const ForceField& forceField() const { return force_field_; }
+
+  // Evaluates every scheduled parameter at time t.
+  void setTime(double t);
+  double time() const { return time_; }
+  std::int64_t step = 0;  // chemistry windows completed
+  RunCounters counters;
+
+  // All coordinates as one vector (the minimizer's variables) and back into the meshes.
+  Eigen::VectorXd coordinates() const;
+  void setCoordinates(const Eigen::VectorXd& x);
+  Index numVertices() const;
+
+ private:
+  void buildForceField();
+
+  std::vector<std::unique_ptr<Membrane>> membranes_;
+  ForceField force_field_;
+  double time_ = 0.0;
+};
+
+}  // namespace cortex
