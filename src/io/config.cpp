@@ -89,6 +89,7 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
     r.fail("area_modulus", "is set but area_model = \"none\"");
   m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
   m.tension = r.schedule("tension", 0.0, any, "pN/nm");
+  m.regularization = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN/nm");
   if (!m.spontaneous_curvature.isZero() && m.curvature == CurvatureEstimator::kUnsigned)
     r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
 

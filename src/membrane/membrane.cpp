@@ -47,6 +47,7 @@ void Membrane::setTime(double t) {
   now_.k_area = m.area_modulus.at(t);
   now_.gamma = m.tension.at(t);
   now_.k_volume = m.volume_modulus.at(t);
+  now_.k_regularization = m.regularization.at(t);
   now_.area0 = m.target_area.isSet() ? m.target_area.at(t) : material_.initial_area;
   vertex_area0_scale_ = now_.area0 / material_.initial_area;
   if (m.target_volume.isSet())

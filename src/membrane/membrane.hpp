@@ -23,6 +23,7 @@ struct MembraneMechanics {
   Schedule area_modulus{0.0};           // pN/nm
   Schedule tension{0.0};                // pN/nm
   Schedule volume_modulus{0.0};         // pN/nm^2
+  Schedule regularization{0.0};         // pN/nm, mesh regularization (regularization_energy.hpp)
   Schedule target_area;                 // nm^2; default: the initial area
   Schedule target_volume;               // nm^3; default: reduced_volume, else the initial volume
   Schedule reduced_volume;              // dimensionless
@@ -40,6 +41,7 @@ struct MembraneMaterial {
 // The scheduled parameters evaluated at the current time.
 struct MembraneCoefficients {
   double kappa = 0, h0 = 0, k_area = 0, area0 = 0, gamma = 0, k_volume = 0, volume0 = 0;
+  double k_regularization = 0;
 };
 
 class Membrane {

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <string>
 #include <unordered_map>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -64,8 +65,7 @@ double meanEdgeLength(const TriangleSoup& soup) {
 
 void requirePositive(const char* what, double value) {
   if (!(value > 0.0)) {
-    throw InputError(std::string("icosphere: ") + what + " must be > 0 (got " +
-                     std::to_string(value) + ")");
+    throw InputError(fmt::format("icosphere: {} must be > 0 (got {})", what, value));
   }
 }
 
@@ -74,9 +74,8 @@ void requirePositive(const char* what, double value) {
 TriangleSoup icosphere(const Vec3& center, double radius, int subdivisions) {
   requirePositive("radius", radius);
   if (subdivisions < 0 || subdivisions > kMaxSubdivisions) {
-    throw InputError("icosphere: subdivisions must be in [0, " +
-                     std::to_string(kMaxSubdivisions) + "] (got " +
-                     std::to_string(subdivisions) + ")");
+    throw InputError(fmt::format("icosphere: subdivisions must be in [0, {}] (got {})",
+                                 kMaxSubdivisions, subdivisions));
   }
   TriangleSoup soup = unitIcosahedron();
   for (int level = 0; level < subdivisions; ++level) subdivideOnUnitSphere(soup);

@@ -1,7 +1,8 @@
 #include "mesh/implicit_shapes.hpp"
 
 #include <algorithm>
-#include <string>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -36,7 +37,7 @@ Vec3 ImplicitSurface::project(Vec3 x, int newton_steps) const {
 
 ImplicitSurface implicitSphere(const Vec3& center, double radius) {
   if (!(radius > 0.0)) {
-    throw InputError("implicitSphere: radius must be > 0 (got " + std::to_string(radius) + ")");
+    throw InputError(fmt::format("implicitSphere: radius must be > 0 (got {})", radius));
   }
   ImplicitSurface s;
   s.value = [center, radius](const Vec3& x) { return (x - center).norm() - radius; };

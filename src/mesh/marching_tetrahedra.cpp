@@ -1,13 +1,17 @@
 #include "mesh/marching_tetrahedra.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
 #include <Eigen/Geometry>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -92,16 +96,22 @@ void weldCloseVertices(TriangleSoup& soup, double tol) {
   dropUnreferencedVertices(soup);
 }
 
+constexpr double kMaxNodesPerLayer = 1e8;  // 800 MB per layer of doubles
+
 class TetMesher {
  public:
   TetMesher(const ImplicitSurface& surface, double spacing)
       : surface_(surface), h_(spacing), eps_(1e-6 * spacing) {
     const int pad = 2;
     origin_ = surface.box_min - Vec3::Constant(pad * h_);
-    for (int axis = 0; axis < 3; ++axis) {
-      const double extent = surface.box_max[axis] - surface.box_min[axis];
-      nodes_[axis] = static_cast<NodeId>(std::ceil(extent / h_)) + 2 * pad + 1;
+    const Vec3 cells = ((surface.box_max - surface.box_min) / h_).array().ceil() + 2 * pad;
+    // Two layers of values are held; refuse grids whose layers would not fit in memory.
+    if (!((cells.x() + 1) * (cells.y() + 1) <= kMaxNodesPerLayer)) {
+      throw InputError(fmt::format("marchingTetrahedra: spacing {} is too fine for a box of "
+                                   "{} x {} (more than {:g} grid nodes per layer)",
+                                   h_, cells.x() * h_, cells.y() * h_, kMaxNodesPerLayer));
     }
+    for (int axis = 0; axis < 3; ++axis) nodes_[axis] = static_cast<NodeId>(cells[axis]) + 1;
   }
 
   TriangleSoup run() {
@@ -133,9 +143,9 @@ class TetMesher {
         const Vec3 x = position({i, j, k});
         double f = surface_.value(x);
         if (!std::isfinite(f)) {
-          throw InputError("marchingTetrahedra: implicit function is not finite at (" +
-                           std::to_string(x.x()) + ", " + std::to_string(x.y()) + ", " +
-                           std::to_string(x.z()) + ")");
+          throw InputError(fmt::format(
+              "marchingTetrahedra: implicit function is not finite at ({}, {}, {})", x.x(),
+              x.y(), x.z()));
         }
         // A node exactly on the surface would put several crossings on one point and
         // create zero-area triangles; pushing it slightly outside keeps them apart.
@@ -268,15 +278,25 @@ void smoothOnSurface(TriangleSoup& soup, const ImplicitSurface& surface, double 
       if (!(area > negligible_area)) continue;  // degenerate ring: no meaningful centroid
       Vec3 move = weighted / area - x[v];
       const Vec3 normal = surface.gradientAt(x[v]).normalized();
-      if (!normal.allFinite()) continue;
-      move -= normal.dot(move) * normal;
+      if (normal.allFinite()) move -= normal.dot(move) * normal;
       const Vec3 moved = surface.project(x[v] + move);
-      // Where the shape is thinner than the mesh resolves, projection can land on the
-      // opposite sheet (normal reversed) and fold the mesh: keep the vertex instead.
-      if (moved.allFinite() && surface.gradientAt(moved).dot(normal) > 0.0) next[v] = moved;
+      if (moved.allFinite()) next[v] = moved;
     }
     x.swap(next);
   }
+}
+
+// Triangles facing against the function's gradient: where the shape is thinner than
+// the grid resolves, one triangle can join both sheets and projection turns it over.
+std::size_t countInvertedTriangles(const TriangleSoup& soup, const ImplicitSurface& surface) {
+  std::size_t inverted = 0;
+  for (const Tri& t : soup.triangles) {
+    const Vec3& a = soup.positions[t[0]];
+    const Vec3& b = soup.positions[t[1]];
+    const Vec3& c = soup.positions[t[2]];
+    if ((b - a).cross(c - a).dot(surface.gradientAt((a + b + c) / 3.0)) < 0.0) ++inverted;
+  }
+  return inverted;
 }
 
 // Measured on spheres and ellipsoids (R = 1000, edges 20-200): the mean edge of the
@@ -302,11 +322,18 @@ TriangleSoup marchingTetrahedra(const ImplicitSurface& surface, double spacing) 
 
 TriangleSoup meshImplicitSurface(const ImplicitSurface& surface, double target_edge) {
   if (!(target_edge > 0.0)) {
-    throw InputError("meshImplicitSurface: target edge must be > 0 (got " +
-                     std::to_string(target_edge) + ")");
+    throw InputError(
+        fmt::format("meshImplicitSurface: target edge must be > 0 (got {})", target_edge));
   }
   TriangleSoup soup = marchingTetrahedra(surface, kSpacingPerEdge * target_edge);
+  const std::string too_coarse =
+      fmt::format("meshImplicitSurface: target edge {} is too coarse: ", target_edge);
+  if (soup.triangles.empty()) throw InputError(too_coarse + "the grid misses the shape");
   smoothOnSurface(soup, surface, target_edge, kSmoothingIterations);
+  if (const std::size_t inverted = countInvertedTriangles(soup, surface); inverted > 0) {
+    throw InputError(too_coarse + std::to_string(inverted) +
+                     " triangles face inward where the shape is thinner than the mesh resolves");
+  }
   return soup;
 }
 

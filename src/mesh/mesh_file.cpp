@@ -12,6 +12,8 @@
 #include <string>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 
 namespace cortex {
@@ -211,9 +213,11 @@ class PlyValues {
   std::string where_;
 };
 
-// List lengths and vertex indices are read as doubles (exact below 2^53).
+// Counts and vertex indices are read as doubles, exact up to 2^53.
 long long wholeNumber(const Path& path, const std::string& where, double v) {
-  if (v < 0 || v != std::floor(v)) fail(path, where, "bad count or index " + std::to_string(v));
+  if (!(v >= 0.0 && v <= 0x1p53) || v != std::floor(v)) {
+    fail(path, where, fmt::format("bad count or index {}", v));
+  }
   return static_cast<long long>(v);
 }
 

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
@@ -11,8 +12,7 @@ namespace {
 
 void requirePositive(const char* what, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw InputError(std::string("planarPatch: ") + what + " must be finite and > 0 (got " +
-                     std::to_string(value) + ")");
+    throw InputError(fmt::format("planarPatch: {} must be finite and > 0 (got {})", what, value));
   }
 }
 

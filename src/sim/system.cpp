@@ -2,6 +2,7 @@
 
 #include "membrane/area_energy.hpp"
 #include "membrane/bending_energy.hpp"
+#include "membrane/regularization_energy.hpp"
 #include "membrane/volume_energy.hpp"
 
 namespace cortex {
@@ -28,6 +29,7 @@ void System::buildForceField() {
         force_field_.add(std::make_unique<GlobalAreaEnergy>(*m));
     }
     if (!mech.tension.isZero()) force_field_.add(std::make_unique<TensionEnergy>(*m));
+    if (!mech.regularization.isZero()) force_field_.add(std::make_unique<RegularizationEnergy>(*m));
     if (!mech.volume_modulus.isZero() && m->isClosed()) force_field_.add(std::make_unique<VolumeEnergy>(*m));
   }
   force_field_.setFrozen(std::move(frozen));

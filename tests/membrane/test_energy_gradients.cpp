@@ -7,6 +7,7 @@
 
 #include "membrane/area_energy.hpp"
 #include "membrane/bending_energy.hpp"
+#include "membrane/regularization_energy.hpp"
 #include "membrane/volume_energy.hpp"
 #include "test_meshes.hpp"
 
@@ -22,6 +23,7 @@ MembraneMechanics stressedMechanics(CurvatureEstimator estimator, AreaModel mode
   m.area_modulus = Schedule(400.0);
   m.tension = Schedule(0.02);
   m.volume_modulus = Schedule(0.8);
+  m.regularization = Schedule(0.05);
   m.curvature = estimator;
   m.area_model = model;
   return m;
@@ -88,6 +90,7 @@ const Case kCases[] = {
     {"tension", [](Membrane& m) { return std::make_unique<TensionEnergy>(m); }, false},
     {"volume", [](Membrane& m) { return std::make_unique<VolumeEnergy>(m); }, true},
     {"bending", [](Membrane& m) { return std::make_unique<BendingEnergy>(m); }, false},
+    {"regularization", [](Membrane& m) { return std::make_unique<RegularizationEnergy>(m); }, false},
 };
 
 INSTANTIATE_TEST_SUITE_P(AllTerms, EnergyGradient,
