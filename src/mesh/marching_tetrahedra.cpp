@@ -14,6 +14,8 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "mesh/mesh_improvement.hpp"
+#include "mesh/surface_mesh.hpp"
 
 namespace cortex {
 namespace {
@@ -330,6 +332,11 @@ TriangleSoup meshImplicitSurface(const ImplicitSurface& surface, double target_e
       fmt::format("meshImplicitSurface: target edge {} is too coarse: ", target_edge);
   if (soup.triangles.empty()) throw InputError(too_coarse + "the grid misses the shape");
   smoothOnSurface(soup, surface, target_edge, kSmoothingIterations);
+  // Raw marching-tetrahedra valences (3 to 8) bias the curvature estimators by ~2.5%
+  // however fine the mesh; flipping towards valence 6 removes that bias.
+  SurfaceMesh mesh = SurfaceMesh::fromSoup(soup, "marching tetrahedra");
+  improveMesh(mesh, [&](const Vec3& x) { return surface.project(x); }, 10);
+  soup = {mesh.positions(), mesh.triangles()};
   if (const std::size_t inverted = countInvertedTriangles(soup, surface); inverted > 0) {
     throw InputError(too_coarse + std::to_string(inverted) +
                      " triangles face inward where the shape is thinner than the mesh resolves");

@@ -23,12 +23,13 @@ using Path = std::filesystem::path;
 
 // "file:where: problem"; `where` is a line number, " face 12" (binary PLY) or empty.
 [[noreturn]] void fail(const Path& path, const std::string& where, const std::string& problem) {
-  throw InputError(path.string() + (where.empty() ? "" : ":" + where) + ": " + problem);
+  const char* separator = where.empty() ? "" : ":";
+  throw InputError(fmt::format("{}{}{}: {}", path.string(), separator, where, problem));
 }
 
 std::string readAll(const Path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open mesh file");
+  if (!in) throw InputError(fmt::format("{}: cannot open mesh file", path.string()));
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
@@ -71,8 +72,8 @@ void addPolygon(TriangleSoup& soup, const std::vector<long long>& polygon,
   if (polygon.size() < 3) fail(path, where, "face has fewer than 3 vertices");
   for (long long v : polygon) {
     if (v < 0 || v >= static_cast<long long>(vertex_count)) {
-      fail(path, where, "vertex index " + std::to_string(v) + " out of range (the file has " +
-                            std::to_string(vertex_count) + " vertices)");
+      fail(path, where,
+           fmt::format("vertex index {} out of range (the file has {} vertices)", v, vertex_count));
     }
   }
   for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
@@ -98,7 +99,7 @@ TriangleSoup readObj(const Path& path) {
       Vec3 p;
       for (int k = 0; k < 3; ++k) {
         const std::optional<double> x = parseNumber(w[k + 1]);
-        if (!x) fail(path, where, "'" + std::string(w[k + 1]) + "' is not a finite number");
+        if (!x) fail(path, where, fmt::format("'{}' is not a finite number", w[k + 1]));
         p[k] = *x;
       }
       soup.positions.push_back(p);
@@ -109,7 +110,7 @@ TriangleSoup readObj(const Path& path) {
         long long v = 0;
         const auto [end, error] = std::from_chars(ref.data(), ref.data() + ref.size(), v);
         if (error != std::errc() || end != ref.data() + ref.size() || v == 0) {
-          fail(path, where, "bad vertex reference '" + std::string(w[k]) + "'");
+          fail(path, where, fmt::format("bad vertex reference '{}'", w[k]));
         }
         // Negative indices count back from the last vertex read so far.
         polygon.push_back(v > 0 ? v - 1 : static_cast<long long>(soup.positions.size()) + v);
@@ -165,11 +166,11 @@ class PlyValues {
 
   void beginRecord(const std::string& element, long long index) {
     if (binary_) {
-      where_ = " " + element + " " + std::to_string(index);
+      where_ = fmt::format(" {} {}", element, index);
       return;
     }
     do {
-      if (next_line_ >= lines_.size()) fail(path_, "", "file ends inside '" + element + "'");
+      if (next_line_ >= lines_.size()) fail(path_, "", fmt::format("file ends in '{}'", element));
       words_ = splitWords(lines_[next_line_++]);
       ++line_no_;
     } while (words_.empty());
@@ -186,15 +187,19 @@ class PlyValues {
       if (next_word_ >= words_.size()) fail(path_, where_, "fewer values than declared");
       const std::string_view word = words_[next_word_++];
       const std::optional<double> value = parseNumber(word);
-      if (!value) fail(path_, where_, "'" + std::string(word) + "' is not a finite number");
+      if (!value) fail(path_, where_, fmt::format("'{}' is not a finite number", word));
       return *value;
     }
     if (offset_ + type.bytes > data_.size()) fail(path_, where_, "file ends early");
     std::uint64_t raw = 0;  // assembled from little-endian bytes, whatever the host order
     for (int i = type.bytes - 1; i >= 0; --i) raw = raw << 8 | std::uint8_t(data_[offset_ + i]);
     offset_ += type.bytes;
-    if (type.is_float && type.bytes == 4) return std::bit_cast<float>(std::uint32_t(raw));
-    if (type.is_float) return std::bit_cast<double>(raw);
+    if (type.is_float) {
+      const double value = type.bytes == 4 ? double(std::bit_cast<float>(std::uint32_t(raw)))
+                                           : std::bit_cast<double>(raw);
+      if (!std::isfinite(value)) fail(path_, where_, "value is not a finite number");
+      return value;
+    }
     if (type.is_signed && (raw >> (8 * type.bytes - 1)) != 0) {  // sign-extend (ints <= 4 bytes)
       return double(std::int64_t(raw) - (std::int64_t(1) << (8 * type.bytes)));
     }
@@ -263,7 +268,7 @@ PlyHeader readPlyHeader(const Path& path, const std::string& text) {
     } else if (w[0] == "end_header") {
       ended = true;
     } else {
-      fail(path, where, "unrecognized header line '" + std::string(line) + "'");
+      fail(path, where, fmt::format("unrecognized header line '{}'", line));
     }
   }
   return header;
@@ -279,7 +284,7 @@ TriangleSoup readPly(const Path& path) {
   for (std::string_view axis : {"x", "y", "z"}) {
     if (std::none_of(vertex_it->properties.begin(), vertex_it->properties.end(),
                      [&](const PlyProperty& p) { return p.name == axis && !p.list_count; })) {
-      fail(path, "", "vertex element lacks a scalar property " + std::string(axis));
+      fail(path, "", fmt::format("vertex element lacks a scalar property {}", axis));
     }
   }
   auto is_index_list = [](const PlyProperty& p) {
@@ -348,9 +353,10 @@ TriangleSoup readMeshFile(const Path& path) {
   } else if (ext == ".ply") {
     soup = readPly(path);
   } else {
-    throw InputError(path.string() + ": unsupported mesh format '" + ext + "' (use .obj or .ply)");
+    throw InputError(
+        fmt::format("{}: unsupported mesh format '{}' (use .obj or .ply)", path.string(), ext));
   }
-  if (soup.triangles.empty()) throw InputError(path.string() + ": no triangles");
+  if (soup.triangles.empty()) throw InputError(fmt::format("{}: no triangles", path.string()));
   dropUnreferencedVertices(soup);
   return soup;
 }
@@ -368,7 +374,7 @@ void writeObj(const Path& path, const TriangleSoup& soup) {
   for (const Tri& t : soup.triangles) {
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
   }
-  if (!out.flush()) throw InputError(path.string() + ": cannot write mesh file");
+  if (!out.flush()) throw InputError(fmt::format("{}: cannot write mesh file", path.string()));
 }
 
 }  // namespace cortex

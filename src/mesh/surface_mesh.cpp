@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -44,6 +45,19 @@ void checkTriangles(const TriangleSoup& soup, const std::string& source) {
   }
   for (Index v = 0; v < n; ++v)
     if (!used[v]) throw InputError(fmt::format("{}: vertex {} belongs to no triangle", source, v));
+  // Two triangles on the same three vertices enclose nothing (a flat pillow or a
+  // duplicate): manifold by counting, but not a surface.
+  std::unordered_map<std::uint64_t, std::size_t> seen;
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    Tri t = soup.triangles[f];
+    std::sort(t.begin(), t.end());
+    const std::uint64_t key = (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^
+                              static_cast<std::uint64_t>(t[2]);
+    auto [it, inserted] = seen.emplace(key, f);
+    if (!inserted && std::is_permutation(soup.triangles[it->second].begin(), soup.triangles[it->second].end(),
+                                         soup.triangles[f].begin()))
+      throw InputError(fmt::format("{}: triangles {} and {} use the same three vertices", source, it->second, f));
+  }
 }
 
 }  // namespace
@@ -146,6 +160,44 @@ std::vector<Tri> SurfaceMesh::triangles() const {
   std::vector<Tri> tris(face_he_.size());
   for (Index f = 0; f < numFaces(); ++f) tris[f] = faceVertices(f);
   return tris;
+}
+
+bool SurfaceMesh::isFlippable(Index h) const {
+  const Index t = he_twin_[h];
+  if (isBoundaryHalfedge(h) || isBoundaryHalfedge(t)) return false;
+  const Index a = tail(h), b = he_tip_[h];
+  const Index c = he_tip_[he_next_[h]], d = he_tip_[he_next_[t]];
+  if (c == d || valence(a) <= 3 || valence(b) <= 3) return false;
+  Index g = vertex_out_[c];
+  do {
+    if (he_tip_[g] == d) return false;  // c-d exists already: flipping would duplicate it
+    g = rotate(g);
+  } while (g != vertex_out_[c]);
+  return true;
+}
+
+bool SurfaceMesh::flip(Index h) {
+  if (!isFlippable(h)) return false;
+  const Index t = he_twin_[h];
+  const Index hn = he_next_[h], hp = he_prev_[h], tn = he_next_[t], tp = he_prev_[t];
+  const Index a = tail(h), b = he_tip_[h];
+  const Index c = he_tip_[hn], d = he_tip_[tn];
+  const Index f0 = he_face_[h], f1 = he_face_[t];
+  auto link = [this](Index x, Index y, Index z) {
+    he_next_[x] = y, he_next_[y] = z, he_next_[z] = x;
+    he_prev_[y] = x, he_prev_[z] = y, he_prev_[x] = z;
+  };
+  he_tip_[h] = c;  // h: d -> c, t: c -> d
+  he_tip_[t] = d;
+  link(h, hp, tn);  // triangle (d, c, a)
+  link(t, tp, hn);  // triangle (c, d, b)
+  he_face_[tn] = f0;
+  he_face_[hn] = f1;
+  face_he_[f0] = h;
+  face_he_[f1] = t;
+  if (vertex_out_[a] == h) vertex_out_[a] = tn;
+  if (vertex_out_[b] == t) vertex_out_[b] = hn;
+  return true;
 }
 
 void SurfaceMesh::validate() const {

@@ -53,6 +53,13 @@ class SurfaceMesh {
   const std::vector<Vec3>& positions() const { return positions_; }
   std::vector<Vec3>& positions() { return positions_; }
 
+  // Edge flip: the interior edge of half-edge h, shared by triangles (a,b,c) and (b,a,d),
+  // becomes edge c-d. Refuses (returns false, mesh unchanged) on a boundary edge, when c-d
+  // is already an edge, or when a or b would drop below valence 3. Geometry is the
+  // caller's business. Handles stay valid: the same half-edges and faces are reused.
+  bool flip(Index h);
+  bool isFlippable(Index h) const;
+
   // Checks every connectivity invariant; throws std::logic_error on the first broken one.
   // Cheap enough for tests and after every edit in debug builds.
   void validate() const;

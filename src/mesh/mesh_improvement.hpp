@@ -1,0 +1,30 @@
+// Quality improvement of a mesh without changing the surface it represents: edge flips
+// that bring valences towards 6 (4 on boundaries), and tangential smoothing followed by
+// projection back onto the surface (Botsch & Kobbelt 2004, without splits/collapses).
+//
+// Why: the curvature estimators of thesis eqs. 2.8-2.9 converge only on meshes of
+// regular valence; on raw marching-tetrahedra meshes the sphere's bending energy stays
+// ~2.5% above 8 pi kappa however fine the mesh (docs/membrane.md).
+#pragma once
+
+#include <functional>
+
+#include "mesh/surface_mesh.hpp"
+
+namespace cortex {
+
+using SurfaceProjector = std::function<Vec3(const Vec3&)>;
+
+// One sweep of valence-improving flips over all interior edges. Flips that would fold
+// a triangle over (normals of the new pair disagreeing with the old pair) are refused.
+// Returns the number of flips.
+Index equalizeValences(SurfaceMesh& mesh);
+
+// Moves every non-boundary vertex towards the centroid of its neighbours within its
+// tangent plane, then onto the surface. `step` in (0, 1] is the fraction moved.
+void smoothTangentially(SurfaceMesh& mesh, const SurfaceProjector& project, double step);
+
+// Alternates the two until no flip is left or `rounds` is reached.
+void improveMesh(SurfaceMesh& mesh, const SurfaceProjector& project, int rounds);
+
+}  // namespace cortex

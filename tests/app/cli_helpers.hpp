@@ -1,0 +1,165 @@
+// Helpers for end-to-end tests of the `cortex` program: a fresh folder per test, config
+// files, running the real binary (CORTEX_BINARY) with its exit code and output captured,
+// and reading what it wrote (files, summary.json, HDF5 dataset types).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cortex::cli_test {
+
+namespace fs = std::filesystem;
+
+inline fs::path cortexBinary() { return fs::path(CORTEX_BINARY); }
+inline fs::path sourceDir() { return fs::path(CORTEX_SOURCE_DIR); }
+
+// A fresh, empty folder unique to the running test (suite, name, process, counter) under
+// the system temp folder. Removed on destruction unless the test failed or the
+// environment sets CORTEX_KEEP_TEST_DIRS, so a failure can be inspected.
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    std::string name = "notest";
+    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+      name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    path_ = fs::temp_directory_path() / ("cortex_cli_" + name + "_" + std::to_string(::getpid()) + "_" +
+                                         std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    if (std::getenv("CORTEX_KEEP_TEST_DIRS") || ::testing::Test::HasFailure()) {
+      std::cerr << "[ kept     ] " << path_.string() << '\n';
+      return;
+    }
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+inline void writeFile(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+// Writes a config text to dir/name and returns its path.
+inline fs::path writeConfig(const fs::path& dir, const std::string& text,
+                            const std::string& name = "config.toml") {
+  writeFile(dir / name, text);
+  return dir / name;
+}
+
+inline std::string readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline nlohmann::json readJson(const fs::path& file) { return nlohmann::json::parse(readFile(file)); }
+
+// summary.json of OUTDIR without the keys that legitimately differ between equal runs.
+inline nlohmann::json comparableSummary(const fs::path& outdir,
+                                        const std::vector<std::string>& ignore = {"wall_seconds"}) {
+  nlohmann::json j = readJson(outdir / "summary.json");
+  for (const std::string& k : ignore) j.erase(k);
+  return j;
+}
+
+inline std::string shellQuote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+struct RunResult {
+  int exit_code = -1;  // WEXITSTATUS, or 128 + signal
+  std::string out, err;
+  std::string command;
+};
+
+// For failure messages: what was run and what it said.
+inline std::string describe(const RunResult& r) {
+  return "command: " + r.command + "\nexit code: " + std::to_string(r.exit_code) + "\nstdout:\n" + r.out +
+         "\nstderr:\n" + r.err;
+}
+
+// Runs `cortex args...` with stdin from /dev/null; stdout and stderr go to files in
+// capture_dir (kept there for inspection) and are returned.
+inline RunResult runCortex(const std::vector<std::string>& args, const fs::path& capture_dir) {
+  static std::atomic<int> counter{0};
+  const int n = counter++;
+  const fs::path out = capture_dir / ("cortex_stdout_" + std::to_string(n) + ".txt");
+  const fs::path err = capture_dir / ("cortex_stderr_" + std::to_string(n) + ".txt");
+  RunResult r;
+  r.command = shellQuote(cortexBinary().string());
+  for (const std::string& a : args) r.command += " " + shellQuote(a);
+  const std::string shell =
+      r.command + " </dev/null >" + shellQuote(out.string()) + " 2>" + shellQuote(err.string());
+  const int status = std::system(shell.c_str());
+  if (status == -1) {
+    r.exit_code = -1;
+  } else if (WIFEXITED(status)) {
+    r.exit_code = WEXITSTATUS(status);
+  } else if (WIFSIGNALED(status)) {
+    r.exit_code = 128 + WTERMSIG(status);
+  }
+  if (fs::exists(out)) r.out = readFile(out);
+  if (fs::exists(err)) r.err = readFile(err);
+  return r;
+}
+
+// Storage type of an HDF5 dataset, straight from the C API (the h5::File wrapper
+// converts on read, so it cannot tell float64 from float32).
+struct H5TypeInfo {
+  H5T_class_t type_class = H5T_NO_CLASS;
+  std::size_t bytes = 0;
+  bool is_signed = false;
+};
+
+inline H5TypeInfo h5DatasetType(const fs::path& file, const std::string& dataset) {
+  H5TypeInfo info;
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) return info;
+  const hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
+  if (d >= 0) {
+    const hid_t t = H5Dget_type(d);
+    info.type_class = H5Tget_class(t);
+    info.bytes = H5Tget_size(t);
+    info.is_signed = info.type_class == H5T_INTEGER && H5Tget_sign(t) == H5T_SGN_2;
+    H5Tclose(t);
+    H5Dclose(d);
+  }
+  H5Fclose(f);
+  return info;
+}
+
+}  // namespace cortex::cli_test
