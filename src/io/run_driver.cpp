@@ -115,7 +115,14 @@ void runSimulation(const RunRequest& request) {
   const bool live = !request.quiet && isatty(STDERR_FILENO);
   OutputObserver observer(outdir, header, writer, config.simulation.end_time, live);
   Simulation simulation(*system, config.simulation, config.mechanics, observer);
-  simulation.run(!resume);
+  try {
+    simulation.run(!resume);
+  } catch (const RunError& e) {
+    observer.finishProgress();
+    spdlog::error("run failed at t = {:.6g} s (window {}): {}; the last snapshot and checkpoint are kept",
+                  system->time(), system->step, e.what());
+    throw;
+  }
   observer.finishProgress();
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
