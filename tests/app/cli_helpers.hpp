@@ -113,14 +113,20 @@ inline std::string describe(const RunResult& r) {
 }
 
 // Runs `cortex args...` with stdin from /dev/null; stdout and stderr go to files in
-// capture_dir (kept there for inspection) and are returned.
-inline RunResult runCortex(const std::vector<std::string>& args, const fs::path& capture_dir) {
+// capture_dir (kept there for inspection) and are returned. `env` holds extra
+// "NAME=value" settings for the child only.
+inline RunResult runCortex(const std::vector<std::string>& args, const fs::path& capture_dir,
+                           const std::vector<std::string>& env = {}) {
   static std::atomic<int> counter{0};
   const int n = counter++;
   const fs::path out = capture_dir / ("cortex_stdout_" + std::to_string(n) + ".txt");
   const fs::path err = capture_dir / ("cortex_stderr_" + std::to_string(n) + ".txt");
   RunResult r;
-  r.command = shellQuote(cortexBinary().string());
+  for (const std::string& e : env) {
+    const auto eq = e.find('=');
+    r.command += e.substr(0, eq + 1) + shellQuote(e.substr(eq + 1)) + " ";
+  }
+  r.command += shellQuote(cortexBinary().string());
   for (const std::string& a : args) r.command += " " + shellQuote(a);
   const std::string shell =
       r.command + " </dev/null >" + shellQuote(out.string()) + " 2>" + shellQuote(err.string());

@@ -37,9 +37,10 @@ class CliErrors : public ::testing::Test {
   void expectInputError(const RunResult& r, const std::vector<std::string>& needles,
                         bool names_config_file = true) const {
     EXPECT_EQ(r.exit_code, 2) << describe(r);
-    if (names_config_file)
+    if (names_config_file) {
       EXPECT_NE(r.err.find(config_.string()), std::string::npos) << "message does not name the file\n"
                                                                  << describe(r);
+    }
     for (const std::string& n : needles)
       EXPECT_NE(r.err.find(n), std::string::npos) << "message does not mention '" << n << "'\n" << describe(r);
   }
