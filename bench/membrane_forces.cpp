@@ -49,9 +49,12 @@ enum class MeshKind { kIcosphere, kMarchingTetrahedra };
 // Built once per kind: Google Benchmark calls each benchmark function several times
 // (iteration-count search, repetitions) and marching tetrahedra takes a while.
 const TriangleSoup& sphereSoup(MeshKind kind) {
-  static const TriangleSoup ico = icosphere(Vec3::Zero(), kRadius, 5);
+  if (kind == MeshKind::kIcosphere) {
+    static const TriangleSoup ico = icosphere(Vec3::Zero(), kRadius, 5);
+    return ico;
+  }
   static const TriangleSoup mt = meshImplicitSurface(implicitSphere(Vec3::Zero(), kRadius), kMtEdge);
-  return kind == MeshKind::kIcosphere ? ico : mt;
+  return mt;
 }
 
 const char* meshName(MeshKind kind) { return kind == MeshKind::kIcosphere ? "ico" : "mt"; }

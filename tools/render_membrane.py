@@ -127,45 +127,48 @@ def principal_semi_axes(x):
     """Half the extent of the vertex cloud along each principal direction (nm), descending."""
     c, vecs = principal_frame(x)
     y = (x - c) @ vecs
-    return 0.5 * (y.max(axis=0) - y.min(axis=0)), y
+    semi = 0.5 * (y.max(axis=0) - y.min(axis=0))
+    order = np.argsort(semi)[::-1]                        # variance and extent orders may differ
+    return semi[order], y[:, order]
 
 
 def classify(x):
-    """Rough shape class from the principal semi-axes a1 >= a2 >= a3 and the profile along
-    the shortest axis. Heuristic thresholds (documented in tools/README.md)."""
+    """Rough shape class from the principal semi-axes a1 >= a2 >= a3 (half extents of the
+    vertex cloud) and, for flattened shapes, the profile along the shortest axis.
+
+    sphere       a1/a3 < 1.05
+    prolate      elongation dominates: a1/a2 > a2/a3; "(triaxial)" appended when a2/a3 > 1.1
+    oblate       flattening dominates: a2/a3 >= a1/a2; "(triaxial)" appended when a1/a2 > 1.1
+    discocyte    oblate with a dimple (> 5% of the thickness) on both faces at the axis
+    stomatocyte  oblate with a dimple on one face only (a cup)
+    These are heuristics for a quick label; report the semi-axes and look at the picture."""
     semi, y = principal_semi_axes(x)
-    order = np.argsort(semi)[::-1]
-    semi, y = semi[order], y[:, order]
     a1, a2, a3 = semi
     if a1 / a3 < 1.05:
         return "sphere", semi
-    if a2 / a3 < 1.15 and a1 / a2 >= 1.15:
-        return "prolate", semi
-    if a1 / a2 < 1.15 and a2 / a3 >= 1.15:
-        # axisymmetric about the short axis z: look for dimples where the membrane meets the axis
-        rho = np.hypot(y[:, 0], y[:, 1])
-        z = y[:, 2]
-        near = rho < 0.2 * a1
-        if near.sum() < 4:
-            return "oblate", semi
-        zc = z[near]
-        upper, lower = zc[zc > np.median(zc)], zc[zc <= np.median(zc)]
-        # thickness at the centre vs overall; dimple depths of each face
-        top_dimple = z.max() - (upper.max() if upper.size else z.max())
-        bottom_dimple = (lower.min() if lower.size else z.min()) - z.min()
-        thickness = z.max() - z.min()
-        deep = 0.08 * thickness
-        # a cup: the membrane crosses the axis twice on the same side of the mid-plane
-        same_side = zc.size and (np.all(zc > 0.5 * (z.max() + z.min()) - 0.1 * thickness) or
-                                 np.all(zc < 0.5 * (z.max() + z.min()) + 0.1 * thickness))
-        if same_side and max(top_dimple, bottom_dimple) > 0.3 * thickness:
-            return "stomatocyte", semi
-        if top_dimple > deep and bottom_dimple > deep:
-            return "discocyte", semi
-        if max(top_dimple, bottom_dimple) > deep:
-            return "stomatocyte", semi
-        return "oblate", semi
-    return "other", semi
+    if a1 / a2 > a2 / a3:
+        return "prolate" + (" (triaxial)" if a2 / a3 > 1.1 else ""), semi
+    triaxial = " (triaxial)" if a1 / a2 > 1.1 else ""
+    # axis of the flattened shape = shortest principal direction (z after principal_semi_axes)
+    c = 0.5 * (y.max(axis=0) + y.min(axis=0))
+    rho = np.hypot(y[:, 0] - c[0], y[:, 1] - c[1])
+    z = y[:, 2] - c[2]
+    near = rho < 0.15 * a2
+    if near.sum() < 2:
+        return "oblate" + triaxial, semi
+    zc = z[near]
+    thickness = z.max() - z.min()
+    top_dimple = z.max() - zc.max()          # how far the upper face at the axis sits below the top
+    bottom_dimple = zc.min() - z.min()       # how far the lower face at the axis sits above the bottom
+    deep = 0.05 * thickness
+    if top_dimple > deep and bottom_dimple > deep:
+        # both faces dimpled: a discocyte, unless one dimple reaches past the mid-plane (a cup)
+        if max(top_dimple, bottom_dimple) > 0.5 * thickness:
+            return "stomatocyte" + triaxial, semi
+        return "discocyte" + triaxial, semi
+    if max(top_dimple, bottom_dimple) > deep:
+        return "stomatocyte" + triaxial, semi
+    return "oblate" + triaxial, semi
 
 
 # ------------------------------------------------------------------------ rendering

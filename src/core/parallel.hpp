@@ -11,9 +11,13 @@
 
 namespace cortex {
 
+// Below this many items a loop runs on one thread: opening a parallel region costs more
+// than the work, and on a loaded machine waiting threads make it far worse.
+inline constexpr Index kMinParallelItems = 4096;
+
 template <class F>
 void parallelFor(Index n, F&& body) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelItems)
   for (Index i = 0; i < n; ++i) body(i);
 }
 
@@ -22,7 +26,7 @@ double deterministicSum(Index n, F&& term) {
   constexpr Index kChunk = 2048;
   const Index chunks = (n + kChunk - 1) / kChunk;
   std::vector<double> partial(static_cast<std::size_t>(chunks), 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelItems)
   for (Index c = 0; c < chunks; ++c) {
     double s = 0.0;
     const Index end = std::min(n, (c + 1) * kChunk);

@@ -78,7 +78,10 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
   const Range any{};
   m.bending_modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
   m.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
-  m.curvature = r.choice("curvature", "signed", {"signed", "unsigned"}) == "signed"
+  // Default as the thesis advises (sec. 2.2.2): the signed estimator where the sign
+  // matters (H0 != 0), the unsigned one otherwise, which resists folded vertices.
+  const char* default_estimator = m.spontaneous_curvature.isZero() ? "unsigned" : "signed";
+  m.curvature = r.choice("curvature", default_estimator, {"signed", "unsigned"}) == "signed"
                     ? CurvatureEstimator::kSigned
                     : CurvatureEstimator::kUnsigned;
   const std::string model = r.choice("area_model", "global", {"global", "per_vertex", "none"});
@@ -89,7 +92,7 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
     r.fail("area_modulus", "is set but area_model = \"none\"");
   m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
   m.tension = r.schedule("tension", 0.0, any, "pN/nm");
-  m.regularization = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN/nm");
+  m.regularization = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
   if (!m.spontaneous_curvature.isZero() && m.curvature == CurvatureEstimator::kUnsigned)
     r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
 

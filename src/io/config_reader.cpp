@@ -2,12 +2,32 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "core/error.hpp"
 
 namespace cortex {
+namespace {
+
+// Levenshtein distance, to suggest the key a user probably meant.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
 
 bool Range::contains(double v) const {
   return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
@@ -47,7 +67,12 @@ bool ConfigReader::has(const std::string& key) const {
 const toml::node& ConfigReader::node(const std::string& key) const {
   used_.insert(key);
   const toml::node* n = table_.get(key);
-  if (!n) fail(key, "is required but missing");
+  if (!n) {
+    std::string hint;
+    for (const auto& [k, unused] : table_)
+      if (editDistance(std::string(k.str()), key) <= 2) hint = fmt::format(" (found \"{}\": misspelt?)", k.str());
+    fail(key, "is required but missing" + hint);
+  }
   return *n;
 }
 

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "mesh/mesh_quality.hpp"
 
 namespace cortex {
 
@@ -26,6 +27,8 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
                   {"area", g.area},
                   {"energy", energy},
                   {"species", json::object()}};
+    const MeshQuality q = measureQuality(m->topology(), m->mesh().positions());
+    entry["quality"] = {{"min_angle_deg", q.min_angle_deg}, {"max_aspect_ratio", q.max_aspect_ratio}};
     if (m->isClosed()) {
       entry["volume"] = g.volume;
       entry["reduced_volume"] = g.volume / sphereVolumeOfArea(g.area);

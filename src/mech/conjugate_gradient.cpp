@@ -10,6 +10,7 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
   Eigen::VectorXd g(x.size()), x_new(x.size()), g_new(x.size());
   double energy = f.valueAndGradient(x, g);
   checkFinite(energy, g, "at the start of minimization");
+  const Eigen::VectorXd start = x;
   Eigen::VectorXd d = -g;
   double previous_step = 0.0, previous_slope = 0.0;
   const LineSearchParams params{1e-4, 0.1, 40};
@@ -40,7 +41,7 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
       continue;
     }
     checkFinite(ls.value, g_new, "during minimization");
-    checkBounded(ls.value, x_new);
+    checkBounded(ls.value, x_new, start);
     const double beta = std::max(0.0, g_new.dot(g_new - g) / g.squaredNorm());
     previous_step = ls.step;
     previous_slope = slope;

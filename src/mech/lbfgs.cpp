@@ -1,6 +1,7 @@
 // Limited-memory BFGS with the two-loop recursion (Nocedal & Wright 2006, alg. 7.4) and
 // the initial Hessian scaled by s.y / y.y of the latest pair.
 #include <deque>
+#include <vector>
 
 #include "mech/line_search.hpp"
 #include "mech/minimizer.hpp"
@@ -34,6 +35,7 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
   Eigen::VectorXd g(x.size()), x_new(x.size()), g_new(x.size());
   double energy = f.valueAndGradient(x, g);
   checkFinite(energy, g, "at the start of minimization");
+  const Eigen::VectorXd start = x;
   std::deque<CurvaturePair> pairs;
   const LineSearchParams params{1e-4, 0.9, 40};
   MinimizationResult r;
@@ -62,7 +64,7 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
       continue;
     }
     checkFinite(ls.value, g_new, "during minimization");
-    checkBounded(ls.value, x_new);
+    checkBounded(ls.value, x_new, start);
     CurvaturePair p{x_new - x, g_new - g, 0.0};
     const double sy = p.s.dot(p.y);
     if (sy > 1e-12 * p.s.norm() * p.y.norm()) {

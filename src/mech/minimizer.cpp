@@ -24,15 +24,18 @@ void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* whe
     throw RunError(fmt::format("forces are not finite {} (degenerate geometry?)", where));
 }
 
-void checkBounded(double energy, const Eigen::VectorXd& x) {
-  // Far beyond any cell: the energy is unbounded below (e.g. negative tension with no
-  // area elasticity) and the minimizer would never stop.
-  constexpr double kRunaway = 1e9;  // nm
-  if (maxAbs(x) > kRunaway || energy < -1e30)
+void checkBounded(double energy, const Eigen::VectorXd& x, const Eigen::VectorXd& start) {
+  // A relaxation moves a structure by a fraction of its size; travelling a hundred
+  // times its size means the energy is unbounded below (e.g. negative tension with no
+  // area elasticity) and the minimizer would otherwise run to max_iterations.
+  const double extent = start.size() ? start.maxCoeff() - start.minCoeff() : 0.0;
+  const double travelled = maxAbs(x - start);
+  if (travelled > 100.0 * extent + 1e4 || energy < -1e30 || !x.allFinite())
     throw RunError(fmt::format(
-        "energy minimization diverged (energy {:.6g} pN·nm, a coordinate reached {:.3g} nm): "
-        "the energy is unbounded below; check the signs and sizes of tension and moduli",
-        energy, maxAbs(x)));
+        "energy minimization diverged (energy {:.6g} pN·nm, a coordinate travelled {:.3g} nm "
+        "from where the minimization began): the energy is unbounded below; check the signs "
+        "and sizes of tension and moduli",
+        energy, travelled));
 }
 
 }  // namespace detail

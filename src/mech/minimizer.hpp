@@ -35,7 +35,9 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
 MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettings& s);
 // Shared guards of both methods.
 void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* where);
-void checkBounded(double energy, const Eigen::VectorXd& x);
+// Runaway guard: the energy is unbounded below if it reaches -1e30 or the coordinates
+// travel from `start` more than 100 times the extent of `start` (plus 1e4 nm).
+void checkBounded(double energy, const Eigen::VectorXd& x, const Eigen::VectorXd& start);
 double maxAbs(const Eigen::VectorXd& v);
 }  // namespace detail
 

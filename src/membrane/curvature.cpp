@@ -1,5 +1,7 @@
 #include "membrane/curvature.hpp"
 
+#include <cmath>
+
 #include "membrane/membrane.hpp"
 
 namespace cortex {
@@ -19,8 +21,13 @@ std::vector<double> vertexMeanCurvature(const MeshGeometry& g, const MeshTopolog
                                         CurvatureEstimator estimator) {
   std::vector<double> h(topo.numVertices(), 0.0);
   for (Index v = 0; v < topo.numVertices(); ++v)
-    if (!topo.on_boundary[v])
-      h[v] = meanCurvature(g.area_gradient[v], g.volume_gradient[v], estimator).H;
+    if (!topo.on_boundary[v]) {
+      const Vec3& ga = g.area_gradient[v];
+      const Vec3& gv = g.volume_gradient[v];
+      // The unsigned estimator has no sign; report it with the sign of <gA, gV> so that
+      // concave regions still show as concave.
+      h[v] = std::copysign(meanCurvature(ga, gv, estimator).H, ga.dot(gv));
+    }
   return h;
 }
 

@@ -24,7 +24,9 @@ struct CurvatureAndDerivative {
 CurvatureAndDerivative meanCurvature(const Vec3& area_gradient, const Vec3& volume_gradient,
                                      CurvatureEstimator estimator);
 
-// Mean curvature of every vertex (zero on boundary vertices, where it is undefined).
+// Mean curvature of every vertex for output: the estimator's value with the sign of
+// <gA, gV> (so the unsigned estimator still tells concave from convex); zero on
+// boundary vertices, where it is undefined.
 std::vector<double> vertexMeanCurvature(const MeshGeometry& g, const MeshTopology& topo,
                                         CurvatureEstimator estimator);
 

@@ -23,7 +23,7 @@ struct MembraneMechanics {
   Schedule area_modulus{0.0};           // pN/nm
   Schedule tension{0.0};                // pN/nm
   Schedule volume_modulus{0.0};         // pN/nm^2
-  Schedule regularization{0.0};         // pN/nm, mesh regularization (regularization_energy.hpp)
+  Schedule regularization{0.0};         // pN·nm per triangle, mesh regularization (regularization_energy.hpp)
   Schedule target_area;                 // nm^2; default: the initial area
   Schedule target_volume;               // nm^3; default: reduced_volume, else the initial volume
   Schedule reduced_volume;              // dimensionless

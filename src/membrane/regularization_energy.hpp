@@ -1,14 +1,19 @@
-// Mesh regularization: keeps triangles near-equilateral while the shape relaxes.
+// Mesh regularization: keeps triangles well shaped and evenly sized while the shape
+// relaxes, so that the discrete energies stay accurate.
 //
-//   E = k_reg sum_t [ (l_a^2 + l_b^2 + l_c^2) / (4 sqrt 3) - A_t ]
+//   E = k_reg sum_t [ (q_t - 1) + (A_t / Ā - 1)^2 ],
+//   q_t = (l_a^2 + l_b^2 + l_c^2) / (4 sqrt(3) A_t),   Ā = A / (number of triangles)
 //
-// Each bracket is >= 0 and vanishes exactly for an equilateral triangle, whatever its
-// size, so the term resists shearing triangles into slivers without favouring any
-// area. A fluid membrane has no in-plane shear stiffness: vertex motion within the
-// surface is a discretization artefact, and without a restoring force the discrete
-// bending energy drifts vertices into degenerate triangles during long minimizations.
-// (Mem3DG regularizes its meshes with similar in-plane terms: Zhu et al., Biophys.
-// Rep. 2022.) Choose k_reg small against the physical moduli; docs/membrane.md.
+// q_t >= 1 with equality exactly for an equilateral triangle, and grows without bound as
+// a triangle flattens into a sliver; the second part vanishes on a mesh of equal
+// triangle areas. Neither depends on the membrane's size. Why it is needed: a fluid
+// membrane has no in-plane stiffness, so moving vertices within the surface costs no
+// physical energy, but the discrete energies are not exactly invariant under it. Left
+// alone, a minimizer collapses triangles (forces then become meaningless) or grows a few
+// huge flat triangles whose under-resolved curvature lowers the discrete bending energy
+// below the continuum bound 8 pi kappa. (Mem3DG regularizes its meshes with similar
+// in-plane terms: Zhu et al., Biophys. Rep. 2022.) k_reg is an energy per triangle in
+// pN nm; keep it a fraction of kBT (docs/membrane.md).
 #pragma once
 
 #include "membrane/membrane_term.hpp"

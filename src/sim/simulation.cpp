@@ -1,9 +1,13 @@
 #include "sim/simulation.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <cmath>
+
+#include "core/error.hpp"
+#include "mesh/mesh_quality.hpp"
 
 namespace cortex {
 
@@ -27,6 +31,31 @@ bool Simulation::crosses(double interval, std::int64_t k) const {
   return slot(k) > slot(k - 1);
 }
 
+// Below this angle a triangle has collapsed: its normal, curvature and forces are
+// meaningless, and continuing would only write nonsense.
+constexpr double kCollapsedAngleDeg = 0.1;
+
+void Simulation::checkMeshes() const {
+  for (const auto& m : system_.membranes()) {
+    // No lipid membrane survives a hundred-fold change of area: the energy is unbounded
+    // (e.g. negative tension without area elasticity) even if each minimization stayed
+    // within its own bounds.
+    const double growth = m->currentGeometry().area / m->material().initial_area;
+    if (growth > 100.0 || growth < 0.01)
+      throw RunError(fmt::format(
+          "membrane \"{}\": area changed {:.3g}-fold since the start at t = {:.6g} s: the energy "
+          "is unbounded; check the signs and sizes of tension and moduli",
+          m->name(), growth, system_.time()));
+    const MeshQuality q = measureQuality(m->topology(), m->mesh().positions());
+    if (q.min_angle_deg < kCollapsedAngleDeg)
+      throw RunError(fmt::format(
+          "membrane \"{}\": triangle {} collapsed (smallest angle {:.3g} deg) at t = {:.6g} s. "
+          "Drive the shape change more gently (smaller steps in the schedules), or raise "
+          "mesh_regularization",
+          m->name(), q.worst_face, q.min_angle_deg, system_.time()));
+  }
+}
+
 MinimizationResult Simulation::relax() {
   const auto start = std::chrono::steady_clock::now();
   Eigen::VectorXd x = system_.coordinates();
@@ -37,6 +66,7 @@ MinimizationResult Simulation::relax() {
   c.minimizer_iterations += r.iterations;
   c.last_max_force = r.max_force;
   c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  checkMeshes();
   if (!r.converged) {
     ++c.unconverged_minimizations;
     spdlog::warn("t = {:.6g} s: minimization stopped before convergence after {} iterations "

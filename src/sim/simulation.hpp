@@ -29,6 +29,7 @@ class Simulation {
 
  private:
   MinimizationResult relax();
+  void checkMeshes() const;
   bool crosses(double interval, std::int64_t k) const;
 
   System& system_;

@@ -78,11 +78,7 @@ TEST_F(CliErrors, UnknownTopLevelSectionIsNamed) {
 // "(did you mean ...)".
 TEST_F(CliErrors, TypoOfRequiredKeyIsRejected) {
   const RunResult r = check(configWith("radiuss = 200.0\nmesh_size = 40.0\n"));
-  expectInputError(r, {"membrane.0.radius"});
-  if (r.err.find("radiuss") == std::string::npos)
-    GTEST_SKIP() << "message does not name the misspelt key 'radiuss' (it reports the missing "
-                    "'radius' instead): "
-                 << r.err;
+  expectInputError(r, {"membrane.0.radius", "radiuss"});
 }
 
 TEST_F(CliErrors, WrongTypeIsNamed) {

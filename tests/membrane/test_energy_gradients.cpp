@@ -23,7 +23,7 @@ MembraneMechanics stressedMechanics(CurvatureEstimator estimator, AreaModel mode
   m.area_modulus = Schedule(400.0);
   m.tension = Schedule(0.02);
   m.volume_modulus = Schedule(0.8);
-  m.regularization = Schedule(0.05);
+  m.regularization = Schedule(2.0);
   m.curvature = estimator;
   m.area_model = model;
   return m;
@@ -69,7 +69,6 @@ class EnergyGradient : public ::testing::TestWithParam<std::tuple<Case, bool>> {
 
 TEST_P(EnergyGradient, MatchesCentralDifferences) {
   const auto& [c, closed] = GetParam();
-  if (c.closed_only && !closed) GTEST_SKIP() << "volume is defined for closed membranes only";
   for (auto estimator : {CurvatureEstimator::kSigned, CurvatureEstimator::kUnsigned}) {
     SurfaceMesh mesh = closed ? testing::sphereMesh(250.0, 2, 6.0, Vec3(40, -30, 20))
                               : testing::patchMesh(300.0, 40.0, 5.0);
@@ -93,8 +92,18 @@ const Case kCases[] = {
     {"regularization", [](Membrane& m) { return std::make_unique<RegularizationEnergy>(m); }, false},
 };
 
-INSTANTIATE_TEST_SUITE_P(AllTerms, EnergyGradient,
-                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Bool()),
+// Every term on a sphere; on an open patch every term but the volume, which only a
+// closed membrane has.
+std::vector<std::tuple<Case, bool>> allCases() {
+  std::vector<std::tuple<Case, bool>> out;
+  for (const Case& c : kCases) {
+    out.emplace_back(c, true);
+    if (!c.closed_only) out.emplace_back(c, false);
+  }
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTerms, EnergyGradient, ::testing::ValuesIn(allCases()),
                          [](const auto& info) {
                            std::string s = std::get<0>(info.param).label;
                            for (char& ch : s)
