@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Render a membrane of a cortex run with matplotlib, coloured by mean curvature.
 
-Reads OUTDIR/trajectory.h5 (the layout of docs in ARCHITECTURE.md, "Output"):
+Reads OUTDIR/trajectory.h5 (layout: ARCHITECTURE.md, "Output", and docs/output.md):
   /snapshots/NNNNNN/membranes/<name>/vertices        (n,3) nm
   /snapshots/NNNNNN/membranes/<name>/triangles       (m,3)
   /snapshots/NNNNNN/membranes/<name>/mean_curvature  (n)   1/nm
@@ -16,6 +16,7 @@ Examples:
   render_membrane.py out --snapshot 0 --views 3 --out start.png
   render_membrane.py out --montage 0,5,10,last --out shrink.png
   render_membrane.py out --info                   # print area, volume, v, principal semi-axes
+  render_membrane.py runA runB --labels "A,B" --align --out ab.png   # last snapshots side by side
 
 Needs numpy, h5py and matplotlib (Debian: /usr/bin/python3).
 """
@@ -244,7 +245,9 @@ def render(members, args):
         for j, (elev, azim, label) in enumerate(views):
             ax = fig.add_subplot(1, ncols, i * len(views) + j + 1, projection="3d")
             draw(ax, m, x, norm, cmap, elev, azim, args.edges, half)
-            heading = title_of(m, x) if j == 0 or len(members) > 1 else ""
+            heading = title_of(m, x) if j == 0 else ""
+            if j == 0 and m.get("label"):
+                heading = f"{m['label']}\n{heading}"
             ax.set_title(heading + (f"\n{label}" if label and len(views) > 1 else ""), fontsize=8)
     if any(m["H"] is not None for m in members):
         sm = plt.cm.ScalarMappable(norm=mcolors.Normalize(-clim * 1e3, clim * 1e3), cmap=cmap)
@@ -279,11 +282,14 @@ def parse_args(argv):
                     "curvature: red concave, white flat, blue convex.",
         epilog="Snapshots are numbered as the groups /snapshots/NNNNNN; negative numbers count "
                "from the end. Exit code 2 on bad input (missing file, snapshot or membrane).")
-    p.add_argument("outdir", help="cortex output directory (or the trajectory.h5 itself)")
+    p.add_argument("outdir", nargs="+",
+                   help="cortex output directory (or its trajectory.h5); several give one panel each")
     p.add_argument("--snapshot", default="last", help="snapshot number, 'first' or 'last' (default: last)")
     p.add_argument("--montage", metavar="LIST",
                    help="comma-separated snapshots drawn side by side with one colour scale, "
                         "e.g. 0,5,10,last; 'all' for every snapshot (overrides --snapshot)")
+    p.add_argument("--labels", metavar="LIST",
+                   help="comma-separated panel captions, one per panel (e.g. 'prolate start,oblate start')")
     p.add_argument("--membrane", help="membrane name (default: the first one in the snapshot)")
     p.add_argument("--out", help="output PNG (default: OUTDIR/membrane_<snapshot>.png)")
     p.add_argument("--views", type=int, choices=(1, 3), default=1,
@@ -303,10 +309,11 @@ def parse_args(argv):
     return p.parse_args(argv)
 
 
-def main(argv=None):
-    args = parse_args(argv)
-    try:
-        path = trajectory_path(args.outdir)
+def load_members(args):
+    """One entry per panel: the --montage snapshots of one run, or --snapshot of each run."""
+    members = []
+    for outdir in args.outdir:
+        path = trajectory_path(outdir)
         try:
             h5 = h5py.File(path, "r")
         except OSError as e:
@@ -318,15 +325,34 @@ def main(argv=None):
                 snaps = [resolve_snapshot(names, s) for s in specs]
             else:
                 snaps = [resolve_snapshot(names, args.snapshot)]
-            members = [load_membrane(h5, s, args.membrane) for s in snaps]
+            for s in snaps:
+                m = load_membrane(h5, s, args.membrane)
+                m["path"] = path
+                members.append(m)
+    if args.labels is not None:
+        labels = args.labels.split(",")
+        if len(labels) != len(members):
+            raise UsageError(f"--labels has {len(labels)} entries for {len(members)} panels")
+        for m, label in zip(members, labels):
+            m["label"] = label.strip()
+    return members
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    try:
+        if args.montage and len(args.outdir) > 1:
+            raise UsageError("--montage takes the snapshots of one run; give one OUTDIR")
+        members = load_members(args)
         if args.info:
             for m in members:
                 print_info(m)
             if not args.out:
                 return 0
         if args.out is None:
-            base = os.path.dirname(path)
-            tag = "montage" if args.montage else ("last" if args.snapshot == "last" else snaps[0])
+            base = os.path.dirname(members[0]["path"])
+            tag = ("montage" if args.montage or len(members) > 1
+                   else "last" if args.snapshot == "last" else members[0]["snapshot"])
             args.out = os.path.join(base, f"membrane_{tag}.png")
         render(members, args)
         print(f"wrote {args.out}")

@@ -1,21 +1,21 @@
 #include "mesh/marching_tetrahedra.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <unordered_map>
 #include <utility>
-
-#include <Eigen/Geometry>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "mesh/mesh_improvement.hpp"
+#include "mesh/soup_cleanup.hpp"
 #include "mesh/surface_mesh.hpp"
+#include "mesh/surface_smoothing.hpp"
 
 namespace cortex {
 namespace {
@@ -45,58 +45,6 @@ int det(const Offset& a, const Offset& b, const Offset& c) {
 }
 
 Offset minus(const Offset& a, const Offset& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
-// Vertices no triangle uses are dropped; the others keep their relative order.
-void dropUnreferencedVertices(TriangleSoup& soup) {
-  std::vector<Index> new_index(soup.positions.size(), -1);
-  for (const Tri& t : soup.triangles) {
-    for (Index v : t) new_index[v] = 0;
-  }
-  std::vector<Vec3> kept;
-  for (std::size_t v = 0; v < new_index.size(); ++v) {
-    if (new_index[v] < 0) continue;
-    new_index[v] = Index(kept.size());
-    kept.push_back(soup.positions[v]);
-  }
-  for (Tri& t : soup.triangles) {
-    for (Index& v : t) v = new_index[v];
-  }
-  soup.positions = std::move(kept);
-}
-
-// Merges vertices closer than tol (a sweep along x), then drops collapsed triangles.
-void weldCloseVertices(TriangleSoup& soup, double tol) {
-  const std::vector<Vec3>& x = soup.positions;
-  std::vector<Index> order(x.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](Index a, Index b) { return x[a].x() < x[b].x(); });
-  std::vector<Index> parent(x.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  bool merged = false;
-  for (std::size_t a = 0; a < order.size(); ++a) {
-    const Index i = order[a];
-    for (std::size_t b = a + 1; b < order.size() && x[order[b]].x() - x[i].x() <= tol; ++b) {
-      const Index j = order[b];
-      if ((x[j] - x[i]).norm() > tol) continue;
-      const Index ri = root(i), rj = root(j);
-      parent[std::max(ri, rj)] = std::min(ri, rj);  // lowest index survives: deterministic
-      merged = true;
-    }
-  }
-  if (!merged) return;
-  std::vector<Tri> kept;
-  for (Tri t : soup.triangles) {
-    for (Index& v : t) v = root(v);
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) kept.push_back(t);
-  }
-  soup.triangles = std::move(kept);
-  dropUnreferencedVertices(soup);
-}
 
 constexpr double kMaxNodesPerLayer = 1e8;  // 800 MB per layer of doubles
 
@@ -241,65 +189,6 @@ class TetMesher {
   std::unordered_map<NodeId, Index> vertex_of_edge_;
   TriangleSoup soup_;
 };
-
-// Vertex -> incident triangles, as offsets into one flat list (compressed rows).
-struct Incidence {
-  std::vector<Index> offset, faces;
-  explicit Incidence(const TriangleSoup& soup) : offset(soup.positions.size() + 1, 0) {
-    for (const Tri& t : soup.triangles) {
-      for (Index v : t) ++offset[v + 1];
-    }
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    faces.resize(offset.back());
-    std::vector<Index> fill(offset.begin(), offset.end() - 1);
-    for (Index f = 0; f < Index(soup.triangles.size()); ++f) {
-      for (Index v : soup.triangles[f]) faces[fill[v]++] = f;
-    }
-  }
-};
-
-// Jacobi sweeps (results independent of vertex order) moving every vertex to the
-// area-weighted centroid of its 1-ring, tangentially, then back onto the surface.
-void smoothOnSurface(TriangleSoup& soup, const ImplicitSurface& surface, double edge,
-                     int iterations) {
-  const Incidence ring(soup);
-  std::vector<Vec3>& x = soup.positions;
-  std::vector<Vec3> next(x.size());
-  const double negligible_area = 1e-12 * edge * edge;
-  for (int it = 0; it < iterations; ++it) {
-    for (Index v = 0; v < Index(x.size()); ++v) {
-      Vec3 weighted = Vec3::Zero();
-      double area = 0.0;
-      for (Index k = ring.offset[v]; k < ring.offset[v + 1]; ++k) {
-        const Tri& t = soup.triangles[ring.faces[k]];
-        const double a = 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
-        weighted += a * (x[t[0]] + x[t[1]] + x[t[2]]) / 3.0;
-        area += a;
-      }
-      next[v] = x[v];
-      if (!(area > negligible_area)) continue;  // degenerate ring: no meaningful centroid
-      Vec3 move = weighted / area - x[v];
-      const Vec3 normal = surface.gradientAt(x[v]).normalized();
-      if (normal.allFinite()) move -= normal.dot(move) * normal;
-      const Vec3 moved = surface.project(x[v] + move);
-      if (moved.allFinite()) next[v] = moved;
-    }
-    x.swap(next);
-  }
-}
-
-// Triangles facing against the function's gradient: where the shape is thinner than
-// the grid resolves, one triangle can join both sheets and projection turns it over.
-std::size_t countInvertedTriangles(const TriangleSoup& soup, const ImplicitSurface& surface) {
-  std::size_t inverted = 0;
-  for (const Tri& t : soup.triangles) {
-    const Vec3& a = soup.positions[t[0]];
-    const Vec3& b = soup.positions[t[1]];
-    const Vec3& c = soup.positions[t[2]];
-    if ((b - a).cross(c - a).dot(surface.gradientAt((a + b + c) / 3.0)) < 0.0) ++inverted;
-  }
-  return inverted;
-}
 
 // Measured on spheres and ellipsoids (R = 1000, edges 20-200): the mean edge of the
 // Freudenthal surface is 0.52-0.55 grid spacings, so spacing = 1.9 x target gives a mean
