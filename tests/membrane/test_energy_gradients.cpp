@@ -57,6 +57,9 @@ struct Case {
   bool closed_only;
 };
 
+// Readable test parameters in ctest's listing.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.label; }
+
 void setStressedTargets(Membrane& m) {
   // Targets away from the current state so that every term has a non-zero gradient.
   MembraneMechanics mech = m.mechanics();

@@ -62,7 +62,10 @@ TEST_P(SphereMinimum, SphereAtReducedVolumeOneIsAMinimum) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CgAndLbfgs, SphereMinimum,
-                         ::testing::Values(MinimizerKind::kConjugateGradient, MinimizerKind::kLbfgs));
+                         ::testing::Values(MinimizerKind::kConjugateGradient, MinimizerKind::kLbfgs),
+                         [](const auto& info) {
+                           return std::string(info.param == MinimizerKind::kLbfgs ? "lbfgs" : "cg");
+                         });
 
 // E = 2 kappa (1/R - H0)^2 4 pi R^2 = 8 pi kappa (1 - R H0)^2 on a sphere.
 TEST(SpontaneousCurvature, SphereEnergyFollowsTheClosedForm) {
