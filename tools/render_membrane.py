@@ -140,8 +140,10 @@ def classify(x):
     sphere       a1/a3 < 1.05
     prolate      elongation dominates: a1/a2 > a2/a3; "(triaxial)" appended when a2/a3 > 1.1
     oblate       flattening dominates: a2/a3 >= a1/a2; "(triaxial)" appended when a1/a2 > 1.1
-    discocyte    oblate with a dimple (> 5% of the thickness) on both faces at the axis
-    stomatocyte  oblate with a dimple on one face only (a cup)
+    discocyte    oblate with a dimple (> 5% of the thickness) on both faces at the axis,
+                 the membrane crossing the axis near the mid-plane
+    stomatocyte  oblate with a one-sided dimple, or crossing the axis off the mid-plane
+                 by more than 20% of the thickness (a cup)
     These are heuristics for a quick label; report the semi-axes and look at the picture."""
     semi, y = principal_semi_axes(x)
     a1, a2, a3 = semi
@@ -162,14 +164,14 @@ def classify(x):
     top_dimple = z.max() - zc.max()          # how far the upper face at the axis sits below the top
     bottom_dimple = zc.min() - z.min()       # how far the lower face at the axis sits above the bottom
     deep = 0.05 * thickness
-    if top_dimple > deep and bottom_dimple > deep:
-        # both faces dimpled: a discocyte, unless one dimple reaches past the mid-plane (a cup)
-        if max(top_dimple, bottom_dimple) > 0.5 * thickness:
-            return "stomatocyte" + triaxial, semi
+    if max(top_dimple, bottom_dimple) <= deep:
+        return "oblate" + triaxial, semi
+    # where the membrane crosses the axis: around the mid-plane for a discocyte, pushed to
+    # one side (the bottom of the invagination next to the outer wall) for a cup
+    offset = abs(0.5 * (zc.max() + zc.min())) / thickness
+    if offset < 0.2 and top_dimple > deep and bottom_dimple > deep:
         return "discocyte" + triaxial, semi
-    if max(top_dimple, bottom_dimple) > deep:
-        return "stomatocyte" + triaxial, semi
-    return "oblate" + triaxial, semi
+    return "stomatocyte" + triaxial, semi
 
 
 # ------------------------------------------------------------------------ rendering

@@ -216,10 +216,18 @@ void SurfaceMesh::validate() const {
     if (he_face_[h] != f || he_next_[he_next_[he_next_[h]]] != h)
       fail(fmt::format("face {} is not a triangle of its half-edges", f));
   }
+  std::vector<Index> out_count(positions_.size(), 0);
+  std::unordered_map<std::uint64_t, Index> directed;
+  for (Index h = 0; h < numHalfedges(); ++h) {
+    ++out_count[tail(h)];
+    if (!directed.emplace(edgeKey(tail(h), he_tip_[h]), h).second)
+      fail(fmt::format("edge {}-{} appears twice", tail(h), he_tip_[h]));
+  }
   for (Index v = 0; v < numVertices(); ++v) {
     const Index h = vertex_out_[v];
     if (tail(h) != v) fail(fmt::format("outgoing half-edge of vertex {} starts elsewhere", v));
-    if (valence(v) < 2) fail(fmt::format("vertex {} has valence below 2", v));
+    if (valence(v) < 3 - isBoundaryVertex(v)) fail(fmt::format("vertex {} has valence {}", v, valence(v)));
+    if (valence(v) != out_count[v]) fail(fmt::format("vertex {} is not a single fan", v));
   }
 }
 

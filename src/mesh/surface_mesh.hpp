@@ -23,6 +23,7 @@ class SurfaceMesh {
   // zero-area triangle. Throws InputError naming `source` on the first violation.
   static SurfaceMesh fromSoup(const TriangleSoup& soup, const std::string& source);
 
+  // Counts include elements deleted by collapse() until garbageCollect().
   Index numVertices() const { return static_cast<Index>(positions_.size()); }
   Index numFaces() const { return static_cast<Index>(face_he_.size()); }
   Index numHalfedges() const { return static_cast<Index>(he_tip_.size()); }
@@ -60,7 +61,31 @@ class SurfaceMesh {
   bool flip(Index h);
   bool isFlippable(Index h) const;
 
-  // Checks every connectivity invariant; throws std::logic_error on the first broken one.
+  // Edge split: a new vertex at `position` splits the edge of h and each triangle on it
+  // in two. Returns the new vertex. Works on boundary edges (the new vertex is then a
+  // boundary vertex). Never refuses.
+  Index split(Index h, const Vec3& position);
+
+  // Edge collapse: the tail a of h merges into its tip b (b keeps its position; move it
+  // afterwards if wanted), removing the one or two triangles on the edge. Refuses
+  // (returns false, mesh unchanged) when a is a boundary vertex, when the edge's two
+  // ends share a neighbour other than the edge's opposite vertices (the link condition:
+  // the result would not be a manifold), when an opposite vertex would drop below
+  // valence 3, or when a closed mesh would shrink below a tetrahedron. Removed elements
+  // are marked (isDeleted*) until garbageCollect().
+  bool collapse(Index h);
+  bool isCollapsible(Index h) const;
+
+  bool isDeletedVertex(Index v) const { return vertex_out_[v] == kNone; }
+  bool isDeletedFace(Index f) const { return face_he_[f] == kNone; }
+  bool isDeletedHalfedge(Index h) const { return he_tip_[h] == kNone; }
+  bool hasGarbage() const { return garbage_; }
+  // Compacts the arrays after collapses. Returns old vertex index -> new index (kNone
+  // for removed vertices) so per-vertex data can follow.
+  std::vector<Index> garbageCollect();
+
+  // Checks every connectivity invariant (on a compacted mesh: after garbageCollect());
+  // throws std::logic_error on the first broken one.
   // Cheap enough for tests and after every edit in debug builds.
   void validate() const;
 
@@ -69,6 +94,7 @@ class SurfaceMesh {
   std::vector<Index> he_tip_, he_next_, he_prev_, he_twin_, he_face_;
   std::vector<Index> vertex_out_, face_he_;
   Index num_boundary_halfedges_ = 0;
+  bool garbage_ = false;
 };
 
 }  // namespace cortex
