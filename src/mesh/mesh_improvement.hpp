@@ -16,9 +16,15 @@ namespace cortex {
 using SurfaceProjector = std::function<Vec3(const Vec3&)>;
 
 // One sweep of valence-improving flips over all interior edges. Flips that would fold
-// a triangle over (normals of the new pair disagreeing with the old pair) are refused.
-// Returns the number of flips.
-Index equalizeValences(SurfaceMesh& mesh);
+// a triangle over (normals of the new pair disagreeing with the old pair) are refused,
+// and so, with keep_delaunay, are flips whose new edge would not be Delaunay (so that
+// valence and Delaunay sweeps do not undo each other). Returns the number of flips.
+Index equalizeValences(SurfaceMesh& mesh, bool keep_delaunay = false);
+
+// One sweep of Delaunay flips: an interior edge whose two opposite angles sum to more
+// than pi is flipped (which raises the smallest angle of the pair), unless the flip
+// would fold the surface. Returns the number of flips.
+Index flipToDelaunay(SurfaceMesh& mesh);
 
 // Moves every non-boundary vertex towards the centroid of its neighbours within its
 // tangent plane, then onto the surface. `step` in (0, 1] is the fraction moved.

@@ -1,0 +1,183 @@
+#include "mesh/remesh.hpp"
+
+#include <cmath>
+#include <numeric>
+
+#include "mesh/mesh_improvement.hpp"
+#include "mesh/vertex_normals.hpp"
+
+namespace cortex {
+namespace {
+
+constexpr double kSplitAbove = 4.0 / 3.0;    // of the target length (Botsch & Kobbelt)
+constexpr double kCollapseBelow = 4.0 / 5.0;
+// A triangle normal may turn by at most this much (cosine) in a collapse or relocation:
+// more means the edit folds or badly distorts the surface.
+constexpr double kMinNormalCosine = 0.5;
+
+bool isFixed(const VertexPayload& p, Index v) { return p.fixed && (*p.fixed)[v]; }
+
+Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+// Midpoint of edge a-b lifted onto the circle through a and b that is tangent to the
+// vertex normals: the sagitta s = -1/8 [(b-a).n_a + (a-b).n_b], exact on a sphere.
+Vec3 smoothMidpoint(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb) {
+  const double sagitta = -0.125 * ((b - a).dot(na) + (a - b).dot(nb));
+  const Vec3 n = na + nb;
+  const double len = n.norm();
+  return 0.5 * (a + b) + (len > 0 ? Vec3(sagitta * n / len) : Vec3::Zero());
+}
+
+// True if moving vertex v to `to` keeps every triangle around it (except those also
+// containing `skip`) within the allowed normal rotation.
+bool keepsOrientation(const SurfaceMesh& m, Index v, const Vec3& to, Index skip) {
+  const auto& p = m.positions();
+  Index h = m.outgoing(v);
+  do {
+    if (!m.isBoundaryHalfedge(h)) {
+      const Index b = m.tip(h), c = m.tip(m.next(h));
+      if (b != skip && c != skip) {
+        const Vec3 before = faceNormal(p[v], p[b], p[c]);
+        const Vec3 after = faceNormal(to, p[b], p[c]);
+        if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
+      }
+    }
+    h = m.rotate(h);
+  } while (h != m.outgoing(v));
+  return true;
+}
+
+double edgeTarget(const std::vector<double>& target, Index a, Index b) { return 0.5 * (target[a] + target[b]); }
+
+Index splitLongEdges(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payload) {
+  std::vector<Vec3> normals = vertexNormals(m);
+  Index splits = 0;
+  // Only the edges present at the start: a sweep at most halves an edge, so one bad
+  // sizing estimate cannot run away; the next sweep continues if needed.
+  const Index existing = m.numHalfedges();
+  for (Index h = 0; h < existing; ++h) {
+    const Index t = m.twin(h);
+    if (h > t) continue;
+    const Index a = m.tail(h), b = m.tip(h);
+    const Vec3 pa = m.positions()[a], pb = m.positions()[b];
+    if ((pb - pa).norm() <= kSplitAbove * edgeTarget(target, a, b)) continue;
+    const bool on_boundary = m.isBoundaryHalfedge(h) || m.isBoundaryHalfedge(t);
+    const Vec3 x = on_boundary ? Vec3(0.5 * (pa + pb)) : smoothMidpoint(pa, pb, normals[a], normals[b]);
+    m.split(h, x);
+    ++splits;
+    normals.push_back((normals[a] + normals[b]).normalized());
+    target.push_back(edgeTarget(target, a, b));
+    if (payload.fixed) payload.fixed->push_back(isFixed(payload, a) && isFixed(payload, b) && on_boundary);
+    for (std::vector<int>* c : payload.counts) {
+      const int from_a = (*c)[a] / 4, from_b = (*c)[b] / 4;
+      (*c)[a] -= from_a, (*c)[b] -= from_b;
+      c->push_back(from_a + from_b);
+    }
+    for (std::vector<double>* e : payload.extensive) e->push_back(0.0);
+  }
+  return splits;
+}
+
+bool collapseWouldBeHealthy(const SurfaceMesh& m, Index a, Index b, const std::vector<double>& target) {
+  const auto& p = m.positions();
+  Index h = m.outgoing(a);
+  do {
+    const Index u = m.tip(h);
+    if (u != b && (p[b] - p[u]).norm() > kSplitAbove * edgeTarget(target, b, u)) return false;
+    h = m.rotate(h);
+  } while (h != m.outgoing(a));
+  return keepsOrientation(m, a, p[b], b);
+}
+
+Index collapseShortEdges(SurfaceMesh& m, const std::vector<double>& target, VertexPayload& payload) {
+  Index collapses = 0;
+  for (Index h = 0; h < m.numHalfedges(); ++h) {
+    if (m.isDeletedHalfedge(h)) continue;
+    const Index a = m.tail(h), b = m.tip(h);
+    if (isFixed(payload, a)) continue;
+    if ((m.positions()[b] - m.positions()[a]).norm() >= kCollapseBelow * edgeTarget(target, a, b)) continue;
+    if (!m.isCollapsible(h) || !collapseWouldBeHealthy(m, a, b, target)) continue;
+    m.collapse(h);
+    ++collapses;
+    for (std::vector<int>* c : payload.counts) (*c)[b] += (*c)[a], (*c)[a] = 0;
+    for (std::vector<double>* e : payload.extensive) (*e)[b] += (*e)[a], (*e)[a] = 0.0;
+  }
+  return collapses;
+}
+
+template <class T>
+void compact(std::vector<T>& values, const std::vector<Index>& map) {
+  std::vector<T> out;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (map[i] != kNone) out.push_back(values[i]);
+  values.swap(out);
+}
+
+void compactAll(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payload) {
+  const std::vector<Index> map = m.garbageCollect();
+  compact(target, map);
+  if (payload.fixed) compact(*payload.fixed, map);
+  for (std::vector<int>* c : payload.counts) compact(*c, map);
+  for (std::vector<double>* e : payload.extensive) compact(*e, map);
+}
+
+// Moves vertices towards the area-weighted centroid of their 1-ring, within the
+// tangent plane, where that does not fold a triangle.
+Index relocate(SurfaceMesh& m, const VertexPayload& payload) {
+  Index moved = 0;
+  const std::vector<Vec3> normals = vertexNormals(m);
+  for (Index v = 0; v < m.numVertices(); ++v) {
+    if (m.isBoundaryVertex(v) || isFixed(payload, v)) continue;
+    const auto& p = m.positions();
+    Vec3 centroid = Vec3::Zero();
+    double weight = 0.0;
+    Index h = m.outgoing(v);
+    do {
+      const Index b = m.tip(h), c = m.tip(m.next(h));
+      const double area = faceNormal(p[v], p[b], p[c]).norm();
+      centroid += area * (p[v] + p[b] + p[c]) / 3.0;
+      weight += area;
+      h = m.rotate(h);
+    } while (h != m.outgoing(v));
+    if (!(weight > 0)) continue;
+    Vec3 shift = centroid / weight - p[v];
+    shift -= normals[v] * normals[v].dot(shift);
+    const Vec3 to = p[v] + shift;
+    if (!keepsOrientation(m, v, to, kNone)) continue;
+    m.positions()[v] = to;
+    ++moved;
+  }
+  return moved;
+}
+
+void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
+  if (payload.extensive.empty()) return;
+  std::vector<double> area(m.numVertices());
+  for (Index v = 0; v < m.numVertices(); ++v) area[v] = vertexCurvature(m, v).area;
+  const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
+  for (std::vector<double>* e : payload.extensive) {
+    const double total = std::accumulate(e->begin(), e->end(), 0.0);
+    for (Index v = 0; v < m.numVertices(); ++v) (*e)[v] = total * area[v] / total_area;
+  }
+}
+
+}  // namespace
+
+RemeshStats remesh(SurfaceMesh& m, VertexPayload& payload, const RemeshSettings& settings) {
+  RemeshStats stats;
+  for (int sweep = 0; sweep < settings.max_sweeps; ++sweep) {
+    std::vector<double> target = sizingField(m, settings.sizing);
+    const Index splits = splitLongEdges(m, target, payload);
+    const Index collapses = collapseShortEdges(m, target, payload);
+    compactAll(m, target, payload);
+    const Index flips = equalizeValences(m, true) + flipToDelaunay(m);
+    stats.relocations += relocate(m, payload);
+    stats.splits += splits, stats.collapses += collapses, stats.flips += flips;
+    ++stats.sweeps;
+    if (splits + collapses + flips == 0) break;
+  }
+  redistributeExtensive(m, payload);
+  return stats;
+}
+
+}  // namespace cortex

@@ -1,0 +1,38 @@
+// Adaptive remeshing (thesis sec. 2.2.3; Botsch & Kobbelt 2004 with the curvature-
+// adaptive sizing of Dunyach et al. 2013): split long edges, collapse short ones, flip
+// towards valence 6, relocate vertices tangentially — keeping the shape, refusing any
+// edit that would break the manifold or fold a triangle, and carrying per-vertex data
+// along with their totals conserved.
+#pragma once
+
+#include <vector>
+
+#include "mesh/sizing_field.hpp"
+#include "mesh/surface_mesh.hpp"
+
+namespace cortex {
+
+// Per-vertex data that must survive remeshing.
+struct VertexPayload {
+  std::vector<char>* fixed = nullptr;  // fixed vertices are never moved or removed
+  // Integer copies (e.g. surface species): exact totals; a collapsed vertex's copies go
+  // to the vertex it merged into (its nearest neighbour); a split edge's new vertex
+  // takes a quarter of each end's copies.
+  std::vector<std::vector<int>*> counts;
+  // Extensive real quantities (e.g. material vertex areas): totals kept, redistributed
+  // in proportion to the new vertex areas at the end of the pass.
+  std::vector<std::vector<double>*> extensive;
+};
+
+struct RemeshSettings {
+  SizingParameters sizing;
+  int max_sweeps = 5;  // a pass stops earlier when a sweep changes nothing
+};
+
+struct RemeshStats {
+  Index splits = 0, collapses = 0, flips = 0, relocations = 0, sweeps = 0;
+};
+
+RemeshStats remesh(SurfaceMesh& mesh, VertexPayload& payload, const RemeshSettings& settings);
+
+}  // namespace cortex
