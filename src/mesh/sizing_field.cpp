@@ -7,7 +7,55 @@
 
 namespace cortex {
 namespace {
-constexpr int kCurvatureSmoothingPasses = 2;
+
+constexpr int kCurvatureSmoothingPasses = 1;
+
+// Area-weighted averages of a per-vertex field over each vertex and its 1-ring.
+void smoothOverRings(const SurfaceMesh& m, const std::vector<double>& area, std::vector<double>& field) {
+  for (int pass = 0; pass < kCurvatureSmoothingPasses; ++pass) {
+    std::vector<double> smoothed(m.numVertices());
+    for (Index v = 0; v < m.numVertices(); ++v) {
+      double sum = area[v] * field[v], weight = area[v];
+      Index h = m.outgoing(v);
+      do {
+        sum += area[m.tip(h)] * field[m.tip(h)];
+        weight += area[m.tip(h)];
+        h = m.rotate(h);
+      } while (h != m.outgoing(v));
+      smoothed[v] = weight > 0 ? sum / weight : field[v];
+    }
+    field.swap(smoothed);
+  }
+}
+
+// Largest principal curvature k_max = |H| + sqrt(max(H^2 - K, 0)) per vertex, with H the
+// mean of the normal curvatures along the 1-ring edges, (n_v - n_u).(x_v - x_u) / |x_v -
+// x_u|^2, and K the angle defect per area, both averaged over 1-rings. Area-weighted
+// normals are robust on poor triangles, where the cotan curvature of a raw
+// marching-tetrahedra mesh reads ten times the true value.
+std::vector<double> largestPrincipalCurvature(const SurfaceMesh& m) {
+  const std::vector<Vec3> normals = vertexNormals(m);
+  const auto& p = m.positions();
+  std::vector<double> mean(m.numVertices(), 0.0), gaussian(m.numVertices()), area(m.numVertices());
+  for (Index v = 0; v < m.numVertices(); ++v) {
+    const VertexCurvature k = vertexCurvature(m, v);
+    area[v] = k.area;
+    gaussian[v] = k.gaussian;
+    Index h = m.outgoing(v);
+    do {
+      const Vec3 d = p[v] - p[m.tip(h)];
+      if (d.squaredNorm() > 0) mean[v] += (normals[v] - normals[m.tip(h)]).dot(d) / d.squaredNorm() / m.valence(v);
+      h = m.rotate(h);
+    } while (h != m.outgoing(v));
+  }
+  smoothOverRings(m, area, mean);
+  smoothOverRings(m, area, gaussian);
+  std::vector<double> k_max(m.numVertices());
+  for (Index v = 0; v < m.numVertices(); ++v)
+    k_max[v] = std::abs(mean[v]) + std::sqrt(std::max(mean[v] * mean[v] - gaussian[v], 0.0));
+  return k_max;
+}
+
 }  // namespace
 
 double targetEdgeLength(double k, const SizingParameters& s) {
@@ -18,40 +66,10 @@ double targetEdgeLength(double k, const SizingParameters& s) {
 }
 
 std::vector<double> sizingField(const SurfaceMesh& m, const SizingParameters& s) {
-  // The largest principal curvature is estimated from how fast the vertex normal turns
-  // along each edge, |n_u - n_v| / |x_u - x_v| (exactly 1/R on a sphere, 1/r across a
-  // cylinder): area-weighted normals are robust on poor triangles, where the cotan
-  // curvature of a raw marching-tetrahedra mesh reads ten times the true value. The
-  // estimate is then averaged over 1-rings.
-  const std::vector<Vec3> normals = vertexNormals(m);
-  std::vector<double> curvature(m.numVertices(), 0.0), area(m.numVertices());
-  for (Index v = 0; v < m.numVertices(); ++v) {
-    area[v] = vertexCurvature(m, v).area;
-    Index h = m.outgoing(v);
-    do {
-      const Index u = m.tip(h);
-      const double length = (m.positions()[u] - m.positions()[v]).norm();
-      if (length > 0) curvature[v] += (normals[u] - normals[v]).norm() / length / m.valence(v);
-      h = m.rotate(h);
-    } while (h != m.outgoing(v));
-  }
-  for (int pass = 0; pass < kCurvatureSmoothingPasses; ++pass) {
-    std::vector<double> smoothed(m.numVertices());
-    for (Index v = 0; v < m.numVertices(); ++v) {
-      double sum = area[v] * curvature[v], weight = area[v];
-      Index h = m.outgoing(v);
-      do {
-        sum += area[m.tip(h)] * curvature[m.tip(h)];
-        weight += area[m.tip(h)];
-        h = m.rotate(h);
-      } while (h != m.outgoing(v));
-      smoothed[v] = weight > 0 ? sum / weight : curvature[v];
-    }
-    curvature.swap(smoothed);
-  }
+  const std::vector<double> k_max = largestPrincipalCurvature(m);
   std::vector<double> target(m.numVertices());
-  for (Index v = 0; v < m.numVertices(); ++v) target[v] = targetEdgeLength(curvature[v], s);
-  // Boundary vertices have no reliable curvature: take the finest neighbour.
+  for (Index v = 0; v < m.numVertices(); ++v) target[v] = targetEdgeLength(k_max[v], s);
+  // Boundary vertices have no reliable curvature: take the finest interior neighbour.
   for (Index v = 0; v < m.numVertices(); ++v) {
     if (!m.isBoundaryVertex(v)) continue;
     Index h = m.outgoing(v);
