@@ -115,7 +115,7 @@ def reduced_volume(area, volume):
 
 
 def principal_frame(x):
-    """Centroid and principal directions of the vertex cloud, longest extent first."""
+    """Centroid and principal directions of the vertex cloud, largest variance first."""
     c = x.mean(axis=0)
     _, vecs = np.linalg.eigh(np.cov((x - c).T))
     vecs = vecs[:, ::-1]                                  # descending variance
@@ -256,9 +256,9 @@ def render(members, args):
         cb = fig.colorbar(sm, ax=fig.axes, shrink=0.7, pad=0.02, fraction=0.04)
         cb.set_label("mean curvature H (1/µm)\nred concave, blue convex", fontsize=7)
         cb.ax.tick_params(labelsize=6)
-    if members:
-        fig.suptitle(f"membrane '{members[0]['name']}'", fontsize=8, y=0.99)
-    fig.subplots_adjust(left=0.0, right=0.88, bottom=0.0, top=0.86, wspace=0.0)
+    names = sorted({m["name"] for m in members})
+    fig.text(0.005, 0.01, "membrane " + ", ".join(f"'{n}'" for n in names), fontsize=6, color="0.4")
+    fig.subplots_adjust(left=0.0, right=0.88, bottom=0.0, top=0.84, wspace=0.0)
     fig.savefig(args.out, dpi=args.dpi)
     plt.close(fig)
 

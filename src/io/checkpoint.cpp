@@ -37,6 +37,7 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
     f.setAttribute("/run", "unconverged_minimizations", c.unconverged_minimizations);
     f.setAttribute("/run", "last_max_force", c.last_max_force);
     f.setAttribute("/run", "mechanics_seconds", c.mechanics_seconds);
+    f.setAttribute("/run", "remesh_seconds", c.remesh_seconds);
     f.setAttribute("/run", "force_evaluations", system.forceField().forceEvaluations());
     f.setAttribute("/run", "energy_evaluations", system.forceField().energyEvaluations());
     for (const auto& m : system.membranes()) {
@@ -51,6 +52,8 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
       f.write(g + "/vertex_area0", m->material().vertex_area0);
       f.setAttribute(g, "initial_area", m->material().initial_area);
       f.setAttribute(g, "initial_volume", m->material().initial_volume);
+      const RemeshStats& r = m->remeshTotals();
+      f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
     }
     f.flush();
   }
@@ -75,6 +78,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
   cp.counters.unconverged_minimizations = f.attributeInt64("/run", "unconverged_minimizations");
   cp.counters.last_max_force = f.attributeDouble("/run", "last_max_force");
   cp.counters.mechanics_seconds = f.attributeDouble("/run", "mechanics_seconds");
+  cp.counters.remesh_seconds = f.attributeDouble("/run", "remesh_seconds");
   cp.force_evaluations = f.attributeInt64("/run", "force_evaluations");
   cp.energy_evaluations = f.attributeInt64("/run", "energy_evaluations");
   for (const std::string& name : f.children("/membranes")) {
@@ -89,6 +93,10 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
     s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
     s.material.initial_area = f.attributeDouble(g, "initial_area");
     s.material.initial_volume = f.attributeDouble(g, "initial_volume");
+    const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");
+    if (r.size() != 5) throw InputError(fmt::format("{}: {}/remesh_totals is malformed", file.string(), g));
+    s.remesh_totals = {r[1], r[2], r[3],
+                       r[4], r[0]};
     cp.membranes.emplace(name, std::move(s));
   }
   return cp;

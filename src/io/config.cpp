@@ -119,8 +119,14 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   // Closedness of a loaded mesh is only known once it is read; sim/ checks it again.
   m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane");
   m.remesh = r.boolean("remesh", false);
+  // A loaded mesh has no mesh_size: its sizes default from its own mean edge (sim/).
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
   m.max_size = r.number("max_size", m.mesh_size * 2.0, Range::positive(), "nm");
+  m.remesh_tolerance = r.number("remesh_tolerance", m.mesh_size / 120.0, Range::positive(), "nm");
+  if (m.shape != "mesh" && m.min_size > m.mesh_size)
+    r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
+  if (m.shape != "mesh" && m.max_size < m.mesh_size)
+    r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
   if (r.has("species")) r.fail("species", "membrane species are not supported yet in this version");
   r.finish();
   return m;

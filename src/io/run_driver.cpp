@@ -53,9 +53,10 @@ void logThroughput(const System& system, double wall) {
   const std::int64_t evals = system.forceField().forceEvaluations();
   const double per_s = c.mechanics_seconds > 0 ? evals / c.mechanics_seconds : 0.0;
   spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s "
-               "({:.0f} force evaluations/s, {:.3g} vertex-gradient evaluations/s); wall {:.2f} s",
+               "({:.0f} force evaluations/s, {:.3g} vertex-gradient evaluations/s); remeshing {:.2f} s; "
+               "wall {:.2f} s",
                c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s,
-               per_s * system.numVertices(), wall);
+               per_s * system.numVertices(), c.remesh_seconds, wall);
   if (c.unconverged_minimizations > 0)
     spdlog::warn("{} of {} minimizations stopped before reaching the force tolerance",
                  c.unconverged_minimizations, c.minimizations);
@@ -95,10 +96,6 @@ void runSimulation(const RunRequest& request) {
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",
                resume ? outdir.string() : request.config.string(), config.simulation.seed, request.threads,
                request.threads == 1 ? "" : "s");
-  for (const MembraneConfig& mc : config.membranes)
-    if (mc.remesh)
-      spdlog::warn("membrane \"{}\": remesh = true is accepted but adaptive remeshing is not "
-                   "implemented in this version; the mesh keeps its connectivity", mc.name);
 
   std::unique_ptr<System> system = buildSystem(config, checkpoint ? &*checkpoint : nullptr);
   if (checkpoint) {

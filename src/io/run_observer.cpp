@@ -5,6 +5,7 @@
 
 #include <cstdio>
 
+#include "mesh/mesh_quality.hpp"
 #include "sim/frame_builder.hpp"
 
 namespace cortex {
@@ -22,6 +23,14 @@ OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader he
 void OutputObserver::onSnapshot(const System& system) {
   writer_.write(makeFrame(system));
   spdlog::debug("snapshot {} written at t = {:.6g} s", writer_.nextIndex() - 1, system.time());
+  for (const auto& m : system.membranes()) {
+    const MeshQuality q = measureQuality(m->mesh());
+    const RemeshStats& r = m->remeshTotals();
+    spdlog::info("t = {:.6g} s, membrane \"{}\": {} vertices; min angle {:.1f} deg, max aspect {:.2f}, "
+                 "min dihedral cos {:.3f}; remeshing so far: {} splits, {} collapses, {} flips",
+                 system.time(), m->name(), m->mesh().numVertices(), q.min_angle_deg, q.max_aspect_ratio,
+                 q.min_dihedral_cos, r.splits, r.collapses, r.flips);
+  }
 }
 
 void OutputObserver::onCheckpoint(const System& system) {

@@ -27,8 +27,14 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
                   {"area", g.area},
                   {"energy", energy},
                   {"species", json::object()}};
-    const MeshQuality q = measureQuality(m->topology(), m->mesh().positions());
-    entry["quality"] = {{"min_angle_deg", q.min_angle_deg}, {"max_aspect_ratio", q.max_aspect_ratio}};
+    const MeshQuality q = measureQuality(m->mesh());
+    entry["quality"] = {{"min_angle_deg", q.min_angle_deg},
+                        {"max_aspect_ratio", q.max_aspect_ratio},
+                        {"min_dihedral_cos", q.min_dihedral_cos}};
+    const RemeshStats& r = m->remeshTotals();
+    entry["remesh"] = {{"enabled", m->remeshing().has_value()}, {"sweeps", r.sweeps},
+                       {"splits", r.splits}, {"collapses", r.collapses}, {"flips", r.flips},
+                       {"relocations", r.relocations}};
     if (m->isClosed()) {
       entry["volume"] = g.volume;
       entry["reduced_volume"] = g.volume / sphereVolumeOfArea(g.area);

@@ -58,6 +58,19 @@ void Membrane::setTime(double t) {
     now_.volume0 = material_.initial_volume;
 }
 
+RemeshStats Membrane::remesh(const RemeshSettings& settings) {
+  VertexPayload payload{&fixed_, {}, {&material_.vertex_area0}};
+  const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
+  topology_ = MeshTopology::of(mesh_);
+  cache_valid_ = false;
+  remesh_totals_.splits += stats.splits;
+  remesh_totals_.collapses += stats.collapses;
+  remesh_totals_.flips += stats.flips;
+  remesh_totals_.relocations += stats.relocations;
+  remesh_totals_.sweeps += stats.sweeps;
+  return stats;
+}
+
 const MeshGeometry& Membrane::geometry(const Evaluation& e) {
   if (!cache_valid_ || cache_version_ != e.version) {
     cache_.compute(topology_, e.x + 3 * dof_offset_);

@@ -2,6 +2,7 @@
 // material reference state, and the geometry cache its energy terms share.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "mech/energy_term.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/mesh_topology.hpp"
+#include "mesh/remesh.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace cortex {
@@ -69,6 +71,16 @@ class Membrane {
   Index dofOffset() const { return dof_offset_; }
   void setDofOffset(Index offset) { dof_offset_ = offset; }
 
+  // Remeshes (remesh.hpp), carrying fixed flags and material areas along, and
+  // accumulates the operation counts. Connectivity and vertex count change: the caller
+  // must lay out the coordinates again (System::layOut).
+  RemeshStats remesh(const RemeshSettings& settings);
+  // Remeshing after every minimization, if set (config remesh = true).
+  const std::optional<RemeshSettings>& remeshing() const { return remeshing_; }
+  void setRemeshing(std::optional<RemeshSettings> settings) { remeshing_ = std::move(settings); }
+  const RemeshStats& remeshTotals() const { return remesh_totals_; }
+  void setRemeshTotals(const RemeshStats& totals) { remesh_totals_ = totals; }
+
   // Geometry at the coordinates of `e`, recomputed only when e.version changes.
   const MeshGeometry& geometry(const Evaluation& e);
   // Geometry at the mesh's own positions.
@@ -84,6 +96,8 @@ class Membrane {
   MembraneCoefficients now_;
   double vertex_area0_scale_ = 1.0;
   Index dof_offset_ = 0;
+  std::optional<RemeshSettings> remeshing_;
+  RemeshStats remesh_totals_;
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;
   bool cache_valid_ = false;

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "core/constants.hpp"
-
 namespace cortex {
 namespace {
 
@@ -11,9 +9,16 @@ Vec3 normalOf(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cros
 
 int targetValence(const SurfaceMesh& m, Index v) { return m.isBoundaryVertex(v) ? 4 : 6; }
 
-double angleAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
+// cot of the angle at `apex` in the triangle (apex, a, b).
+double cotAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
   const Vec3 u = a - apex, v = b - apex;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
+  return u.dot(v) / u.cross(v).norm();
+}
+
+// Angles opposite an edge summing to more than pi <=> their cotangents sum below zero
+// (the edge is not Delaunay).
+bool isDelaunay(const Vec3& a, const Vec3& b, const Vec3& opposite1, const Vec3& opposite2) {
+  return cotAt(opposite1, a, b) + cotAt(opposite2, a, b) >= -1e-12;
 }
 
 // The quad a-c-b-d stays convex seen along its normal: the flipped pair does not fold.
@@ -22,26 +27,42 @@ bool flipKeepsOrientation(const std::vector<Vec3>& p, Index a, Index b, Index c,
   return normalOf(p[d], p[c], p[a]).dot(old_normal) > 0 && normalOf(p[c], p[d], p[b]).dot(old_normal) > 0;
 }
 
+std::vector<int> valences(const SurfaceMesh& m) {
+  std::vector<int> val(m.numVertices(), 0);
+  for (Index h = 0; h < m.numHalfedges(); ++h)
+    if (!m.isDeletedHalfedge(h)) ++val[m.tail(h)];
+  return val;
+}
+
+// Cheap necessary conditions for a flip (SurfaceMesh::flip checks them all again).
+bool mayFlip(const SurfaceMesh& m, Index h, const std::vector<int>& val) {
+  const Index t = m.twin(h);
+  return !m.isBoundaryHalfedge(h) && !m.isBoundaryHalfedge(t) && val[m.tail(h)] > 3 && val[m.tip(h)] > 3 &&
+         m.tip(m.next(h)) != m.tip(m.next(t));
+}
 
 }  // namespace
 
 Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
   Index flips = 0;
   const auto& p = m.positions();
+  std::vector<int> val = valences(m);
   for (Index h = 0; h < m.numHalfedges(); ++h) {
     const Index t = m.twin(h);
-    if (h > t || !m.isFlippable(h)) continue;
+    if (h > t || !mayFlip(m, h, val)) continue;
     const Index a = m.tail(h), b = m.tip(h), c = m.tip(m.next(h)), d = m.tip(m.next(t));
     auto deviation = [&](int da, int db, int dc, int dd) {
-      const int va = m.valence(a) + da - targetValence(m, a), vb = m.valence(b) + db - targetValence(m, b);
-      const int vc = m.valence(c) + dc - targetValence(m, c), vd = m.valence(d) + dd - targetValence(m, d);
+      const int va = val[a] + da - targetValence(m, a), vb = val[b] + db - targetValence(m, b);
+      const int vc = val[c] + dc - targetValence(m, c), vd = val[d] + dd - targetValence(m, d);
       return va * va + vb * vb + vc * vc + vd * vd;
     };
     if (deviation(-1, -1, 1, 1) >= deviation(0, 0, 0, 0)) continue;
     if (!flipKeepsOrientation(p, a, b, c, d)) continue;
     // The new edge c-d must itself be Delaunay, or a Delaunay sweep would undo the flip.
-    if (keep_delaunay && angleAt(p[a], p[c], p[d]) + angleAt(p[b], p[c], p[d]) > constants::kPi) continue;
-    flips += m.flip(h);
+    if (keep_delaunay && !isDelaunay(p[c], p[d], p[a], p[b])) continue;
+    if (!m.flip(h)) continue;
+    --val[a], --val[b], ++val[c], ++val[d];
+    ++flips;
   }
   return flips;
 }
@@ -49,13 +70,15 @@ Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
 Index flipToDelaunay(SurfaceMesh& m) {
   Index flips = 0;
   const auto& p = m.positions();
+  std::vector<int> val = valences(m);
   for (Index h = 0; h < m.numHalfedges(); ++h) {
     const Index t = m.twin(h);
-    if (h > t || !m.isFlippable(h)) continue;
+    if (h > t || !mayFlip(m, h, val)) continue;
     const Index a = m.tail(h), b = m.tip(h), c = m.tip(m.next(h)), d = m.tip(m.next(t));
-    if (angleAt(p[c], p[a], p[b]) + angleAt(p[d], p[a], p[b]) <= constants::kPi + 1e-12) continue;
-    if (!flipKeepsOrientation(p, a, b, c, d)) continue;
-    flips += m.flip(h);
+    if (isDelaunay(p[a], p[b], p[c], p[d]) || !flipKeepsOrientation(p, a, b, c, d)) continue;
+    if (!m.flip(h)) continue;
+    --val[a], --val[b], ++val[c], ++val[d];
+    ++flips;
   }
   return flips;
 }

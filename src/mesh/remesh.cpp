@@ -165,8 +165,9 @@ void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
 
 RemeshStats remesh(SurfaceMesh& m, VertexPayload& payload, const RemeshSettings& settings) {
   RemeshStats stats;
+  // Sizing comes from the shape as the pass found it; splits and collapses carry it along.
+  std::vector<double> target = sizingField(m, settings.sizing);
   for (int sweep = 0; sweep < settings.max_sweeps; ++sweep) {
-    std::vector<double> target = sizingField(m, settings.sizing);
     const Index splits = splitLongEdges(m, target, payload);
     const Index collapses = collapseShortEdges(m, target, payload);
     compactAll(m, target, payload);

@@ -30,7 +30,7 @@ struct RemeshSettings {
 };
 
 struct RemeshStats {
-  Index splits = 0, collapses = 0, flips = 0, relocations = 0, sweeps = 0;
+  std::int64_t splits = 0, collapses = 0, flips = 0, relocations = 0, sweeps = 0;
 };
 
 RemeshStats remesh(SurfaceMesh& mesh, VertexPayload& payload, const RemeshSettings& settings);

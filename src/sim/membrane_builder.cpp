@@ -23,6 +23,23 @@ TriangleSoup initialMesh(const MembraneConfig& c) {
 
 namespace {
 
+double meanEdgeLength(const SurfaceMesh& m) {
+  double sum = 0.0;
+  for (Index h = 0; h < m.numHalfedges(); ++h) sum += (m.positions()[m.tip(h)] - m.positions()[m.tail(h)]).norm();
+  return sum / m.numHalfedges();
+}
+
+// A loaded mesh has no mesh_size: its own mean edge length stands in for it.
+RemeshSettings remeshSettings(const MembraneConfig& c, const SurfaceMesh& mesh) {
+  RemeshSettings r;
+  SizingParameters& s = r.sizing;
+  s.flat_size = c.mesh_size > 0 ? c.mesh_size : meanEdgeLength(mesh);
+  s.min_size = c.min_size > 0 ? c.min_size : s.flat_size / 4.0;
+  s.max_size = c.max_size > 0 ? c.max_size : 2.0 * s.flat_size;
+  s.tolerance = c.remesh_tolerance > 0 ? c.remesh_tolerance : s.flat_size / 120.0;
+  return r;
+}
+
 void reverseOrientation(TriangleSoup& soup) {
   for (Tri& t : soup.triangles) std::swap(t[1], t[2]);
 }
@@ -57,7 +74,11 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
       throw InputError(fmt::format("{}: the mesh is open (has a boundary), so volume_modulus, "
                                    "reduced_volume and target_volume cannot apply", where));
   }
-  if (restored) membrane->setMaterial(restored->material);
+  if (restored) {
+    membrane->setMaterial(restored->material);
+    membrane->setRemeshTotals(restored->remesh_totals);
+  }
+  if (c.remesh) membrane->setRemeshing(remeshSettings(c, membrane->mesh()));
   membrane->setTime(0.0);
   return membrane;
 }

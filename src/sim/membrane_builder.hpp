@@ -15,6 +15,7 @@ struct MembraneState {
   TriangleSoup mesh;
   std::vector<char> fixed;
   MembraneMaterial material;
+  RemeshStats remesh_totals;
 };
 
 std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& config, const std::string& source,

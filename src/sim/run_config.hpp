@@ -34,6 +34,7 @@ struct MembraneConfig {
   MembraneMechanics mechanics;
   bool remesh = false;
   double min_size = 0.0, max_size = 0.0;  // nm
+  double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)
 };
 
 struct Config {

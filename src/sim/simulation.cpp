@@ -46,7 +46,7 @@ void Simulation::checkMeshes() const {
           "membrane \"{}\": area changed {:.3g}-fold since the start at t = {:.6g} s: the energy "
           "is unbounded; check the signs and sizes of tension and moduli",
           m->name(), growth, system_.time()));
-    const MeshQuality q = measureQuality(m->topology(), m->mesh().positions());
+    const MeshQuality q = measureQuality(m->mesh());
     if (q.min_angle_deg < kCollapsedAngleDeg)
       throw RunError(fmt::format(
           "membrane \"{}\": triangle {} collapsed (smallest angle {:.3g} deg) at t = {:.6g} s. "
@@ -54,6 +54,22 @@ void Simulation::checkMeshes() const {
           "mesh_regularization",
           m->name(), q.worst_face, q.min_angle_deg, system_.time()));
   }
+}
+
+void Simulation::remeshMembranes() {
+  bool changed = false;
+  for (auto& m : system_.membranes()) {
+    if (!m->remeshing()) continue;
+    const auto start = std::chrono::steady_clock::now();
+    const RemeshStats s = m->remesh(*m->remeshing());
+    system_.counters.remesh_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    spdlog::debug("t = {:.6g} s: remeshed \"{}\" in {} sweeps: {} splits, {} collapses, {} flips, {} "
+                  "relocations; {} vertices",
+                  system_.time(), m->name(), s.sweeps, s.splits, s.collapses, s.flips, s.relocations,
+                  m->mesh().numVertices());
+    changed = true;
+  }
+  if (changed) system_.layOut();
 }
 
 MinimizationResult Simulation::relax() {
@@ -66,6 +82,7 @@ MinimizationResult Simulation::relax() {
   c.minimizer_iterations += r.iterations;
   c.last_max_force = r.max_force;
   c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  remeshMembranes();
   checkMeshes();
   if (!r.converged) {
     ++c.unconverged_minimizations;

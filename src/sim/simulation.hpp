@@ -30,6 +30,7 @@ class Simulation {
  private:
   MinimizationResult relax();
   void checkMeshes() const;
+  void remeshMembranes();
   bool crosses(double interval, std::int64_t k) const;
 
   System& system_;

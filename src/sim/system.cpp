@@ -13,12 +13,7 @@ System::System(std::vector<std::unique_ptr<Membrane>> membranes) : membranes_(st
 
 void System::buildForceField() {
   force_field_ = ForceField();
-  Index offset = 0;
-  std::vector<char> frozen;
   for (auto& m : membranes_) {
-    m->setDofOffset(offset);
-    offset += m->mesh().numVertices();
-    for (char f : m->fixedVertices()) frozen.insert(frozen.end(), 3, f);
     const MembraneMechanics& mech = m->mechanics();
     // Terms whose modulus is zero at all times are left out: they cost time and add nothing.
     if (!mech.bending_modulus.isZero()) force_field_.add(std::make_unique<BendingEnergy>(*m));
@@ -31,6 +26,17 @@ void System::buildForceField() {
     if (!mech.tension.isZero()) force_field_.add(std::make_unique<TensionEnergy>(*m));
     if (!mech.regularization.isZero()) force_field_.add(std::make_unique<RegularizationEnergy>(*m));
     if (!mech.volume_modulus.isZero() && m->isClosed()) force_field_.add(std::make_unique<VolumeEnergy>(*m));
+  }
+  layOut();
+}
+
+void System::layOut() {
+  Index offset = 0;
+  std::vector<char> frozen;
+  for (auto& m : membranes_) {
+    m->setDofOffset(offset);
+    offset += m->mesh().numVertices();
+    for (char f : m->fixedVertices()) frozen.insert(frozen.end(), 3, f);
   }
   force_field_.setFrozen(std::move(frozen));
 }

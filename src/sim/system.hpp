@@ -17,6 +17,7 @@ struct RunCounters {
   std::int64_t unconverged_minimizations = 0;
   double last_max_force = 0.0;  // pN, after the latest minimization
   double mechanics_seconds = 0.0;
+  double remesh_seconds = 0.0;
 };
 
 class System {
@@ -28,6 +29,10 @@ class System {
   const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
   ForceField& forceField() { return force_field_; }
   const ForceField& forceField() const { return force_field_; }
+
+  // Recomputes coordinate offsets and the frozen mask after vertex counts changed
+  // (remeshing); the energy terms and the force field's counters stay.
+  void layOut();
 
   // Evaluates every scheduled parameter at time t.
   void setTime(double t);
