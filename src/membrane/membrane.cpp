@@ -61,6 +61,9 @@ void Membrane::setTime(double t) {
 RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   VertexPayload payload{&fixed_, {}, {&material_.vertex_area0}};
   const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
+  // Rebuilt from its triangle list, the half-edge layout is the one a checkpoint restores
+  // (edits leave it in edit order), so a resumed run remeshes exactly as this one.
+  mesh_ = SurfaceMesh::fromSoup({mesh_.positions(), mesh_.triangles()}, name_);
   topology_ = MeshTopology::of(mesh_);
   cache_valid_ = false;
   remesh_totals_.splits += stats.splits;
