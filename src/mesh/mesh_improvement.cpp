@@ -41,9 +41,10 @@ bool mayFlip(const SurfaceMesh& m, Index h, const std::vector<int>& val) {
          m.tip(m.next(h)) != m.tip(m.next(t));
 }
 
-}  // namespace
-
-Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
+// One sweep over the interior edges: flips edge a-b of triangles (a,b,c), (b,a,d) into
+// c-d wherever wanted(a, b, c, d, valences) says so and the flipped pair does not fold.
+template <class Wanted>
+Index flipWhere(SurfaceMesh& m, Wanted wanted) {
   Index flips = 0;
   const auto& p = m.positions();
   std::vector<int> val = valences(m);
@@ -51,36 +52,34 @@ Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
     const Index t = m.twin(h);
     if (h > t || !mayFlip(m, h, val)) continue;
     const Index a = m.tail(h), b = m.tip(h), c = m.tip(m.next(h)), d = m.tip(m.next(t));
-    auto deviation = [&](int da, int db, int dc, int dd) {
-      const int va = val[a] + da - targetValence(m, a), vb = val[b] + db - targetValence(m, b);
-      const int vc = val[c] + dc - targetValence(m, c), vd = val[d] + dd - targetValence(m, d);
-      return va * va + vb * vb + vc * vc + vd * vd;
-    };
-    if (deviation(-1, -1, 1, 1) >= deviation(0, 0, 0, 0)) continue;
-    if (!flipKeepsOrientation(p, a, b, c, d)) continue;
-    // The new edge c-d must itself be Delaunay, or a Delaunay sweep would undo the flip.
-    if (keep_delaunay && !isDelaunay(p[c], p[d], p[a], p[b])) continue;
-    if (!m.flip(h)) continue;
+    if (!wanted(a, b, c, d, val) || !flipKeepsOrientation(p, a, b, c, d) || !m.flip(h)) continue;
     --val[a], --val[b], ++val[c], ++val[d];
     ++flips;
   }
   return flips;
 }
 
-Index flipToDelaunay(SurfaceMesh& m) {
-  Index flips = 0;
+}  // namespace
+
+Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
   const auto& p = m.positions();
-  std::vector<int> val = valences(m);
-  for (Index h = 0; h < m.numHalfedges(); ++h) {
-    const Index t = m.twin(h);
-    if (h > t || !mayFlip(m, h, val)) continue;
-    const Index a = m.tail(h), b = m.tip(h), c = m.tip(m.next(h)), d = m.tip(m.next(t));
-    if (isDelaunay(p[a], p[b], p[c], p[d]) || !flipKeepsOrientation(p, a, b, c, d)) continue;
-    if (!m.flip(h)) continue;
-    --val[a], --val[b], ++val[c], ++val[d];
-    ++flips;
-  }
-  return flips;
+  return flipWhere(m, [&](Index a, Index b, Index c, Index d, const std::vector<int>& val) {
+    auto deviation = [&](int da, int db, int dc, int dd) {
+      const int va = val[a] + da - targetValence(m, a), vb = val[b] + db - targetValence(m, b);
+      const int vc = val[c] + dc - targetValence(m, c), vd = val[d] + dd - targetValence(m, d);
+      return va * va + vb * vb + vc * vc + vd * vd;
+    };
+    // With keep_delaunay the new edge c-d must itself be Delaunay, or a Delaunay sweep
+    // would undo the flip.
+    return deviation(-1, -1, 1, 1) < deviation(0, 0, 0, 0) && (!keep_delaunay || isDelaunay(p[c], p[d], p[a], p[b]));
+  });
+}
+
+Index flipToDelaunay(SurfaceMesh& m) {
+  const auto& p = m.positions();
+  return flipWhere(m, [&](Index a, Index b, Index c, Index d, const std::vector<int>&) {
+    return !isDelaunay(p[a], p[b], p[c], p[d]);
+  });
 }
 
 void smoothTangentially(SurfaceMesh& m, const SurfaceProjector& project, double step) {
