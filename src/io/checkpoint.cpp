@@ -17,6 +17,34 @@ std::vector<double> flatten(const std::vector<Vec3>& p) {
   return x;
 }
 
+void writeChemistry(h5::File& f, const ChemistryEngine& chem, const ChemistryModel& model) {
+  const auto species = static_cast<Index>(model.species.size());
+  std::vector<std::int32_t> copies;
+  copies.reserve(static_cast<std::size_t>(model.grid.count()) * species);
+  for (Index c = 0; c < model.grid.count(); ++c)
+    for (Index s = 0; s < species; ++s) copies.push_back(chem.copies(c, s));
+  f.write("/chemistry/copies", copies, {static_cast<hsize_t>(model.grid.count()), static_cast<hsize_t>(species)});
+  f.write("/chemistry/reaction_events", chem.reactionEvents());
+  f.setAttribute("/chemistry", "random_counter", static_cast<std::int64_t>(chem.random().counter()));
+  f.setAttribute("/chemistry", "random_used", static_cast<std::int64_t>(chem.random().usedInBlock()));
+  f.setAttribute("/chemistry", "time", chem.time());
+  f.setAttribute("/chemistry", "events", chem.events());
+  f.setAttribute("/chemistry", "diffusion_events", chem.diffusionEvents());
+}
+
+ChemistryState readChemistry(const h5::File& f) {
+  ChemistryState s;
+  const std::vector<std::int32_t> copies = f.readInt32("/chemistry/copies");
+  s.copies.assign(copies.begin(), copies.end());
+  s.reaction_events = f.readInt64("/chemistry/reaction_events");
+  s.random_counter = static_cast<std::uint64_t>(f.attributeInt64("/chemistry", "random_counter"));
+  s.random_used = static_cast<int>(f.attributeInt64("/chemistry", "random_used"));
+  s.time = f.attributeDouble("/chemistry", "time");
+  s.events = f.attributeInt64("/chemistry", "events");
+  s.diffusion_events = f.attributeInt64("/chemistry", "diffusion_events");
+  return s;
+}
+
 }  // namespace
 
 void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const System& system) {
@@ -38,6 +66,7 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
     f.setAttribute("/run", "last_max_force", c.last_max_force);
     f.setAttribute("/run", "mechanics_seconds", c.mechanics_seconds);
     f.setAttribute("/run", "remesh_seconds", c.remesh_seconds);
+    f.setAttribute("/run", "chemistry_seconds", c.chemistry_seconds);
     f.setAttribute("/run", "force_evaluations", system.forceField().forceEvaluations());
     f.setAttribute("/run", "energy_evaluations", system.forceField().energyEvaluations());
     for (const auto& m : system.membranes()) {
@@ -55,6 +84,7 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
       const RemeshStats& r = m->remeshTotals();
       f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
     }
+    if (const ChemistryEngine* chem = system.chemistry()) writeChemistry(f, *chem, system.chemistryModel());
     f.flush();
   }
   std::filesystem::rename(tmp, file);
@@ -79,9 +109,10 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
   cp.counters.last_max_force = f.attributeDouble("/run", "last_max_force");
   cp.counters.mechanics_seconds = f.attributeDouble("/run", "mechanics_seconds");
   cp.counters.remesh_seconds = f.attributeDouble("/run", "remesh_seconds");
+  cp.counters.chemistry_seconds = f.attributeDouble("/run", "chemistry_seconds");
   cp.force_evaluations = f.attributeInt64("/run", "force_evaluations");
   cp.energy_evaluations = f.attributeInt64("/run", "energy_evaluations");
-  for (const std::string& name : f.children("/membranes")) {
+  for (const std::string& name : f.exists("/membranes") ? f.children("/membranes") : std::vector<std::string>{}) {
     const std::string g = "/membranes/" + name;
     MembraneState s;
     const std::vector<double> x = f.readDoubles(g + "/vertices");
@@ -99,6 +130,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
                        r[4], r[0]};
     cp.membranes.emplace(name, std::move(s));
   }
+  if (f.exists("/chemistry")) cp.chemistry = readChemistry(f);
   return cp;
 }
 

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "sim/membrane_builder.hpp"
@@ -18,6 +19,16 @@ struct CheckpointHeader {
   std::int64_t next_snapshot = 0;
 };
 
+// The engine's whole state between advances (chemistry_engine.hpp).
+struct ChemistryState {
+  std::vector<int> copies;  // compartment-major
+  std::uint64_t random_counter = 0;
+  int random_used = 4;
+  double time = 0.0;
+  std::int64_t events = 0, diffusion_events = 0;
+  std::vector<std::int64_t> reaction_events;
+};
+
 struct Checkpoint {
   CheckpointHeader header;
   double time = 0.0;
@@ -25,6 +36,7 @@ struct Checkpoint {
   RunCounters counters;
   std::int64_t force_evaluations = 0, energy_evaluations = 0;
   std::map<std::string, MembraneState> membranes;
+  std::optional<ChemistryState> chemistry;
 };
 
 // Writes atomically (a temporary file renamed over the old one), so a crash never

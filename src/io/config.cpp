@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/chemistry_config.hpp"
 #include "io/config_override.hpp"
 #include "io/config_reader.hpp"
 
@@ -14,8 +15,7 @@ namespace {
 
 // Sections of the contract whose physics is not implemented yet: a clear error beats
 // silently ignoring them.
-const char* const kNotYetSupported[] = {"compartments", "species", "reaction", "filament_type",
-                                        "filaments", "boundary"};
+const char* const kNotYetSupported[] = {"filament_type", "filaments", "boundary"};
 
 SimulationConfig readSimulation(const ConfigReader& r) {
   SimulationConfig s;
@@ -152,7 +152,7 @@ Config parseConfig(const std::string& text, const std::string& source,
 
   const ConfigReader r(root, source, "");
   for (const char* k : kNotYetSupported)
-    if (r.has(k)) r.fail(k, "is not supported yet in this version of cortex (membrane mechanics only)");
+    if (r.has(k)) r.fail(k, "is not supported yet in this version of cortex (no filaments yet)");
   if (auto s = r.table("simulation")) c.simulation = readSimulation(*s);
   if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
   const auto membranes = r.tableArray("membrane");
@@ -162,7 +162,9 @@ Config parseConfig(const std::string& text, const std::string& source,
       if (c.membranes[j].name == c.membranes[i].name)
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
   }
-  if (c.membranes.empty()) throw InputError(fmt::format("{}: no [[membrane]] given: nothing to simulate", source));
+  c.chemistry = readChemistry(r);
+  if (c.membranes.empty() && !c.chemistry)
+    throw InputError(fmt::format("{}: no [[membrane]] and no [[species]] given: nothing to simulate", source));
   r.finish();
   return c;
 }

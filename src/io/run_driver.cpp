@@ -15,6 +15,7 @@
 #include "io/run_observer.hpp"
 #include "io/summary.hpp"
 #include "io/trajectory_writer.hpp"
+#include "sim/chemistry_builder.hpp"
 #include "sim/membrane_builder.hpp"
 #include "sim/simulation.hpp"
 
@@ -45,18 +46,41 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
     }
     membranes.push_back(buildMembrane(mc, config.source, state));
   }
-  return std::make_unique<System>(std::move(membranes));
+  auto system = std::make_unique<System>(std::move(membranes));
+  if (config.chemistry) {
+    const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
+    if (restored && restored->chemistry) {
+      const ChemistryState& s = *restored->chemistry;
+      const std::size_t expected = static_cast<std::size_t>(config.chemistry->model.grid.count()) *
+                                   config.chemistry->model.species.size();
+      if (s.copies.size() != expected || s.reaction_events.size() != config.chemistry->model.reactions.size())
+        throw InputError("checkpoint chemistry does not match the config (grid, species or reactions changed)");
+      auto engine = makeChemistryEngine(config.chemistry->engine, config.chemistry->model, s.copies, seed);
+      RandomStream random(seed, StreamId::kChemistry);
+      random.restore(s.random_counter, s.random_used);
+      engine->restore(random, s.time, s.events, s.reaction_events, s.diffusion_events);
+      system->setChemistry(config.chemistry->model, std::move(engine));
+    } else {
+      system->setChemistry(config.chemistry->model, buildChemistry(*config.chemistry, seed));
+    }
+  }
+  return system;
 }
 
 void logThroughput(const System& system, double wall) {
   const RunCounters& c = system.counters;
   const std::int64_t evals = system.forceField().forceEvaluations();
   const double per_s = c.mechanics_seconds > 0 ? evals / c.mechanics_seconds : 0.0;
-  spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s "
+  if (!system.membranes().empty())
+    spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s "
                "({:.0f} force evaluations/s, {:.3g} vertex-gradient evaluations/s); remeshing {:.2f} s; "
                "wall {:.2f} s",
                c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s,
                per_s * system.numVertices(), c.remesh_seconds, wall);
+  if (const ChemistryEngine* chem = system.chemistry())
+    spdlog::info("chemistry: {} events ({} diffusion hops) in {:.2f} s ({:.3g} events/s)", chem->events(),
+                 chem->diffusionEvents(), c.chemistry_seconds,
+                 c.chemistry_seconds > 0 ? chem->events() / c.chemistry_seconds : 0.0);
   if (c.unconverged_minimizations > 0)
     spdlog::warn("{} of {} minimizations stopped before reaching the force tolerance",
                  c.unconverged_minimizations, c.minimizations);
@@ -126,16 +150,19 @@ void runSimulation(const RunRequest& request) {
   writeJsonAtomically(outdir / "summary.json",
                       summarize(*system, {config.simulation.seed, request.threads, wall}));
   logThroughput(*system, wall);
-  spdlog::info("finished at t = {:.6g} s; output in {}", system->time(), outdir.string());
+  spdlog::info("finished at t = {:.6g} s in {:.2f} s wall; output in {}", system->time(), wall, outdir.string());
 }
 
 std::string checkConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   const Config config = loadConfig(file, overrides);
   Index vertices = 0;
   for (const MembraneConfig& mc : config.membranes) vertices += buildMembrane(mc, config.source)->mesh().numVertices();
-  return fmt::format("{}: ok ({} membrane{}, {} vertices, end_time {:g} s)", file.string(),
-                     config.membranes.size(), config.membranes.size() == 1 ? "" : "s", vertices,
-                     config.simulation.end_time);
+  const std::string chemistry =
+      config.chemistry ? fmt::format(", {} species, {} reactions in {} compartments", config.chemistry->model.species.size(),
+                                     config.chemistry->model.reactions.size(), config.chemistry->model.grid.count())
+                       : "";
+  return fmt::format("{}: ok ({} membrane{}, {} vertices{}, end_time {:g} s)", file.string(), config.membranes.size(),
+                     config.membranes.size() == 1 ? "" : "s", vertices, chemistry, config.simulation.end_time);
 }
 
 }  // namespace cortex

@@ -53,10 +53,14 @@ void OutputObserver::onWindow(const System& system, const MinimizationResult& re
                                  ? system.forceField().forceEvaluations() /
                                        system.counters.mechanics_seconds
                                  : 0.0;
-  const std::string line = fmt::format(
-      "t = {:.4g} / {:.4g} s | wall {:.1f} s | ETA {:.0f} s | {} iterations, max force {:.3g} pN | "
-      "{:.0f} force evaluations/s",
-      system.time(), end_time_, wall, eta, result.iterations, result.max_force, evals_per_s);
+  std::string line = fmt::format("t = {:.4g} / {:.4g} s | wall {:.1f} s | ETA {:.0f} s", system.time(), end_time_,
+                                 wall, eta);
+  if (!system.membranes().empty())
+    line += fmt::format(" | {} iterations, max force {:.3g} pN | {:.0f} force evaluations/s", result.iterations,
+                        result.max_force, evals_per_s);
+  if (const ChemistryEngine* chem = system.chemistry())
+    line += fmt::format(" | {} events, {:.3g} events/s", chem->events(),
+                        system.counters.chemistry_seconds > 0 ? chem->events() / system.counters.chemistry_seconds : 0.0);
   if (live_) {
     std::fprintf(stderr, "\r%-120s", line.c_str());
     std::fflush(stderr);

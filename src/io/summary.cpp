@@ -7,6 +7,31 @@
 
 namespace cortex {
 
+namespace {
+
+nlohmann::json chemistrySummary(const System& system) {
+  using nlohmann::json;
+  const ChemistryEngine* chem = system.chemistry();
+  if (!chem) return {{"events", 0}, {"species", json::object()}};
+  const ChemistryModel& model = system.chemistryModel();
+  json species = json::object();
+  for (Index s = 0; s < static_cast<Index>(model.species.size()); ++s) {
+    std::int64_t total = 0;
+    for (Index c = 0; c < model.grid.count(); ++c) total += chem->copies(c, s);
+    species[model.species[s].name] = total;
+  }
+  json reactions = json::array();
+  for (std::size_t r = 0; r < model.reactions.size(); ++r)
+    reactions.push_back({{"equation", model.reactions[r].equation}, {"events", chem->reactionEvents()[r]}});
+  return {{"events", chem->events()},
+          {"diffusion_events", chem->diffusionEvents()},
+          {"reactions", reactions},
+          {"compartments", model.grid.count()},
+          {"species", species}};
+}
+
+}  // namespace
+
 nlohmann::json summarize(System& system, const RunInfo& info) {
   using nlohmann::json;
   const std::vector<TermEnergy> energies = system.forceField().breakdown(system.coordinates());
@@ -51,7 +76,7 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
           {"threads", info.threads},
           {"membranes", membranes},
           {"filaments", {{"count", 0}, {"total_length", 0.0}, {"energy", {{"total", 0.0}}}}},
-          {"chemistry", {{"events", 0}, {"species", json::object()}}},
+          {"chemistry", chemistrySummary(system)},
           {"mechanics",
            {{"minimizations", c.minimizations},
             {"minimizer_iterations", c.minimizer_iterations},

@@ -104,6 +104,9 @@ void TrajectoryWriter::write(const Frame& frame) {
     for (const MembraneFrame& membrane : frame.membranes) {
       snapshot.membranes.push_back(writeMembrane(file, group, membrane));
     }
+    const h5::Shape grid(frame.grid_shape.begin(), frame.grid_shape.end());
+    for (const SpeciesField& field : frame.compartment_species)
+      file.write(group + "/compartments/species/" + field.name, field.copies, grid);
     file.flush();
   }  // the file closes here
   snapshots_.push_back(std::move(snapshot));

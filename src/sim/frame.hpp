@@ -2,6 +2,7 @@
 // physics objects, so writers (HDF5, XDMF, ...) know nothing of System.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,10 +16,18 @@ struct MembraneFrame {
   std::vector<double> mean_curvature;  // n, 1/nm
 };
 
+// Copies of one 3D species per compartment, laid out as an (nx, ny, nz) C-order array.
+struct SpeciesField {
+  std::string name;
+  std::vector<std::int32_t> copies;
+};
+
 struct Frame {
   double time = 0.0;       // s
   std::int64_t step = 0;   // chemistry windows completed
   std::vector<MembraneFrame> membranes;
+  std::array<std::int64_t, 3> grid_shape{0, 0, 0};
+  std::vector<SpeciesField> compartment_species;
 };
 
 // The loop in sim/ calls write() at every snapshot; implementations live in io/.

@@ -16,6 +16,19 @@ Frame makeFrame(const System& system) {
     mf.mean_curvature = vertexMeanCurvature(m->currentGeometry(), m->topology(), m->mechanics().curvature);
     frame.membranes.push_back(std::move(mf));
   }
+  if (const ChemistryEngine* chem = system.chemistry()) {
+    const CompartmentGrid& g = system.chemistryModel().grid;
+    frame.grid_shape = {g.shape[0], g.shape[1], g.shape[2]};
+    for (Index s = 0; s < static_cast<Index>(system.chemistryModel().species.size()); ++s) {
+      SpeciesField field{system.chemistryModel().species[s].name, {}};
+      field.copies.reserve(g.count());
+      // C order over (x, y, z): z varies fastest, unlike the engine's x-fastest index.
+      for (int i = 0; i < g.shape[0]; ++i)
+        for (int j = 0; j < g.shape[1]; ++j)
+          for (int k = 0; k < g.shape[2]; ++k) field.copies.push_back(chem->copies(g.index(i, j, k), s));
+      frame.compartment_species.push_back(std::move(field));
+    }
+  }
   return frame;
 }
 

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "chem/chemistry_engine.hpp"
 #include "core/types.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
@@ -37,12 +39,26 @@ struct MembraneConfig {
   double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)
 };
 
+// Initial amount of a 3D species: copies in the whole box, spread uniformly at random
+// over the compartments.
+struct SpeciesConfig {
+  SpeciesDef def;
+  std::int64_t copies = 0;
+};
+
+struct ChemistryConfig {
+  EngineKind engine = EngineKind::kNextSubvolume;
+  ChemistryModel model;                 // grid, species, reactions (rates in config units)
+  std::vector<std::int64_t> initial_copies;  // per species, whole box
+};
+
 struct Config {
   std::string source;                // file name for messages
   std::string effective_toml;        // the table after --set overrides (stored in checkpoints)
   SimulationConfig simulation;
   MinimizerSettings mechanics;
   std::vector<MembraneConfig> membranes;
+  std::optional<ChemistryConfig> chemistry;  // present when [[species]] are given
 };
 
 }  // namespace cortex

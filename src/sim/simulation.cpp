@@ -72,7 +72,17 @@ void Simulation::remeshMembranes() {
   if (changed) system_.layOut();
 }
 
+void Simulation::advanceChemistry(double t_end) {
+  ChemistryEngine* chem = system_.chemistry();
+  if (!chem) return;
+  const auto start = std::chrono::steady_clock::now();
+  chem->advance(t_end);
+  system_.counters.chemistry_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 MinimizationResult Simulation::relax() {
+  if (system_.membranes().empty()) return {true, 0, 0.0, 0.0, "nothing to relax"};
   const auto start = std::chrono::steady_clock::now();
   Eigen::VectorXd x = system_.coordinates();
   const MinimizationResult r = minimize(system_.forceField(), x, mech_);
@@ -104,6 +114,7 @@ void Simulation::run(bool fresh) {
     observer_.onCheckpoint(system_);
   }
   for (std::int64_t k = system_.step + 1; k <= totalWindows(); ++k) {
+    advanceChemistry(timeOfWindow(k));
     system_.setTime(timeOfWindow(k));
     const MinimizationResult r = relax();
     system_.step = k;

@@ -31,6 +31,7 @@ class Simulation {
   MinimizationResult relax();
   void checkMeshes() const;
   void remeshMembranes();
+  void advanceChemistry(double t_end);
   bool crosses(double interval, std::int64_t k) const;
 
   System& system_;

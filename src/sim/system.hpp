@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "chem/chemistry_engine.hpp"
 #include "mech/force_field.hpp"
 #include "membrane/membrane.hpp"
 
@@ -18,12 +19,22 @@ struct RunCounters {
   double last_max_force = 0.0;  // pN, after the latest minimization
   double mechanics_seconds = 0.0;
   double remesh_seconds = 0.0;
+  double chemistry_seconds = 0.0;
 };
 
 class System {
  public:
   // Takes ownership of the membranes, lays out their coordinates and builds the force field.
   explicit System(std::vector<std::unique_ptr<Membrane>> membranes);
+
+  // 3D reaction-diffusion, if the config has species.
+  void setChemistry(ChemistryModel model, std::unique_ptr<ChemistryEngine> engine) {
+    chemistry_model_ = std::move(model);
+    chemistry_ = std::move(engine);
+  }
+  ChemistryEngine* chemistry() { return chemistry_.get(); }
+  const ChemistryEngine* chemistry() const { return chemistry_.get(); }
+  const ChemistryModel& chemistryModel() const { return chemistry_model_; }
 
   std::vector<std::unique_ptr<Membrane>>& membranes() { return membranes_; }
   const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
@@ -50,6 +61,8 @@ class System {
 
   std::vector<std::unique_ptr<Membrane>> membranes_;
   ForceField force_field_;
+  ChemistryModel chemistry_model_;
+  std::unique_ptr<ChemistryEngine> chemistry_;
   double time_ = 0.0;
 };
 

@@ -168,4 +168,12 @@ inline H5TypeInfo h5DatasetType(const fs::path& file, const std::string& dataset
   return info;
 }
 
+// `cortex run CONFIG -o OUTDIR -q extra...`
+inline RunResult runConfig(const fs::path& config, const fs::path& outdir, const std::vector<std::string>& extra,
+                           const fs::path& capture, const std::vector<std::string>& env = {}) {
+  std::vector<std::string> args{"run", config.string(), "-o", outdir.string(), "-q"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return runCortex(args, capture, env);
+}
+
 }  // namespace cortex::cli_test

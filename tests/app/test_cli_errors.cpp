@@ -255,13 +255,19 @@ TEST_F(CliErrors, NonManifoldObjIsRejected) {
   EXPECT_NE(run.err.find("fin.obj"), std::string::npos) << describe(run);
 }
 
-TEST_F(CliErrors, ChemistrySectionsAreRejected) {
+// Chemistry sections that would be ignored, and keys of features not built yet, are errors.
+TEST_F(CliErrors, ChemistryKeysThatCannotWorkAreRejected) {
   expectInputError(check(configWith(kSphere, "[compartments]\nsize = 500.0\nshape = [2, 2, 2]\n")),
-                   {"compartments"});
-  expectInputError(check(configWith(kSphere, "[[species]]\nname = \"A\"\ndiffusion = 1.0\ncopies = 10\n")),
-                   {"species"});
+                   {"compartments", "[[species]]"});
   expectInputError(check(configWith(kSphere, "[[reaction]]\nequation = \"A -> B\"\nrate = 1.0\n")),
-                   {"reaction"});
+                   {"reaction", "[[species]]"});
+  const std::string species = "[[species]]\nname = \"A\"\ndiffusion = 1.0\ncopies = 10\n";
+  EXPECT_EQ(check(configWith(kSphere, species)).exit_code, 0) << "3D species are supported";
+  expectInputError(check(configWith(kSphere, species + "inside = \"m\"\n")), {"species.0.inside"});
+  expectInputError(check(configWith(kSphere, species + "[[reaction]]\nequation = \"A ->\"\nrate = 1.0\nregion = 1\n")),
+                   {"reaction.0.region"});
+  expectInputError(check(configWith(kSphere, species + "[[reaction]]\nequation = \"3 A -> B\"\nrate = 1.0\n")),
+                   {"reaction.0.equation"});
   expectInputError(check(configWith(kSphere + "\n[[membrane.species]]\nname = \"M\"\ncopies = 10\n")),
                    {"species"});
 }

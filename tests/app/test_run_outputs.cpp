@@ -103,14 +103,6 @@ int countOccurrences(const std::string& text, const std::string& needle) {
   return n;
 }
 
-// `cortex run CONFIG -o OUTDIR -q extra...`
-RunResult runConfig(const fs::path& config, const fs::path& outdir, const std::vector<std::string>& extra,
-                    const fs::path& capture, const std::vector<std::string>& env = {}) {
-  std::vector<std::string> args{"run", config.string(), "-o", outdir.string(), "-q"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return runCortex(args, capture, env);
-}
-
 TEST(RunOutputs, WritesTheContractOutputs) {
   TempDir dir;
   const fs::path config = writeConfig(dir.path(), vesicleConfig(0.2));

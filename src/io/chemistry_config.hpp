@@ -1,0 +1,16 @@
+// Reading [compartments], [chemistry], [[species]] and [[reaction]]: the 3D
+// reaction-diffusion part of a config.
+#pragma once
+
+#include <optional>
+
+#include "io/config_reader.hpp"
+#include "sim/run_config.hpp"
+
+namespace cortex {
+
+// Empty when the config has no [[species]] (then [[reaction]] and [compartments] are
+// errors: they would be ignored).
+std::optional<ChemistryConfig> readChemistry(const ConfigReader& root);
+
+}  // namespace cortex

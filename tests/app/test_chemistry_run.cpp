@@ -1,0 +1,119 @@
+// Chemistry through the whole program: config, loop, trajectory, summary, checkpoint.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "app/cli_helpers.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace cortex::cli_test {
+namespace {
+
+// A <-> B in a 4 x 3 x 2 grid, plus inflow and decay of C: copies of A + B are conserved
+// exactly, C fluctuates.
+std::string chemistryConfig(double end_time) {
+  return fmt::format(R"([simulation]
+seed = 5
+end_time = {}
+chemistry_window = 0.01
+snapshot_interval = 0.05
+
+[compartments]
+size = 200.0
+shape = [4, 3, 2]
+
+[[species]]
+name = "A"
+diffusion = 1.0e5
+copies = 3000
+
+[[species]]
+name = "B"
+diffusion = 1.0e4
+copies = 1000
+
+[[species]]
+name = "C"
+diffusion = 1.0e5
+copies = 0
+
+[[reaction]]
+equation = "A -> B"
+rate = 20.0
+
+[[reaction]]
+equation = "B -> A"
+rate = 10.0
+
+[[reaction]]
+equation = "-> C"
+rate = 50.0
+
+[[reaction]]
+equation = "C ->"
+rate = 2.0
+)",
+                     end_time);
+}
+
+std::int64_t sum(const std::vector<std::int32_t>& v) { return std::accumulate(v.begin(), v.end(), std::int64_t{0}); }
+
+TEST(ChemistryRun, WritesCompartmentCountsAndConservesCopies) {
+  TempDir dir;
+  const fs::path out = dir / "out";
+  const RunResult r = runConfig(writeConfig(dir.path(), chemistryConfig(0.2)), out, {"--threads", "1"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const h5::File f = h5::File::openReadOnly(out / "trajectory.h5");
+  const std::vector<std::string> snapshots = f.children("/snapshots");
+  ASSERT_EQ(snapshots.size(), 5u);  // t = 0, 0.05, ..., 0.2
+  for (const std::string& s : snapshots) {
+    h5::Shape shape;
+    const auto a = f.readInt32("/snapshots/" + s + "/compartments/species/A", &shape);
+    const auto b = f.readInt32("/snapshots/" + s + "/compartments/species/B");
+    EXPECT_EQ(shape, (h5::Shape{4, 3, 2}));
+    EXPECT_EQ(sum(a) + sum(b), 4000) << "snapshot " << s << ": A <-> B must conserve A + B";
+  }
+  const nlohmann::json summary = readJson(out / "summary.json");
+  const std::string last = "/snapshots/" + snapshots.back() + "/compartments/species/";
+  for (const char* species : {"A", "B", "C"})
+    EXPECT_EQ(summary["chemistry"]["species"][species].get<std::int64_t>(), sum(f.readInt32(last + species)));
+  EXPECT_GT(summary["chemistry"]["events"].get<std::int64_t>(), 1000);
+  std::int64_t by_reaction = 0;
+  for (const auto& reaction : summary["chemistry"]["reactions"]) by_reaction += reaction["events"].get<std::int64_t>();
+  EXPECT_EQ(by_reaction + summary["chemistry"]["diffusion_events"].get<std::int64_t>(),
+            summary["chemistry"]["events"].get<std::int64_t>());
+  EXPECT_NE(readFile(out / "cortex.log").find("events/s"), std::string::npos);
+}
+
+TEST(ChemistryRun, ResumesBitIdentically) {
+  TempDir dir;
+  RunResult r = runConfig(writeConfig(dir.path(), chemistryConfig(0.2), "full.toml"), dir / "A", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runConfig(writeConfig(dir.path(), chemistryConfig(0.1), "half.toml"), dir / "B", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runCortex({"run", "--resume", (dir / "B").string(), "--set", "simulation.end_time=0.2", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
+  const h5::File a = h5::File::openReadOnly(dir / "A" / "trajectory.h5");
+  const h5::File b = h5::File::openReadOnly(dir / "B" / "trajectory.h5");
+  ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
+  for (const std::string& s : a.children("/snapshots"))
+    for (const char* species : {"A", "B", "C"}) {
+      const std::string path = "/snapshots/" + s + "/compartments/species/" + species;
+      EXPECT_EQ(a.readInt32(path), b.readInt32(path)) << path;
+    }
+}
+
+TEST(ChemistryRun, BadReactionNamesTheKey) {
+  TempDir dir;
+  std::string text = chemistryConfig(0.1);
+  text.replace(text.find("A -> B"), 6, "A -> Q");
+  const RunResult r = runCortex({"check", writeConfig(dir.path(), text).string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("reaction.0.equation"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Q"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace cortex::cli_test
