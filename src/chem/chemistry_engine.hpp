@@ -7,6 +7,7 @@
 // direct method over all channels, simple enough to trust, for tests to compare against.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -39,6 +40,23 @@ class ChemistryEngine {
   // Scales reaction r's propensity in one compartment (mechanochemical feedback,
   // partial compartments); 1 by default.
   virtual void setRateFactor(Index reaction, Index compartment, double factor) = 0;
+
+  // Confines `species` to one side of a membrane (thesis 2.2.4.2). Per compartment,
+  // `volume` is the fraction of its volume on that side and `faces` the fractions of its
+  // faces' areas (-x, +x, -y, +y, -z, +z) on that side; a shared face must get the same
+  // value from both compartments (CompartmentSlices does this). Then the per-copy hop
+  // rate through a face is D/h^2 * a_face / f_source (V_i d_ij symmetric, so the
+  // stationary distribution is uniform in the confined volume); compartments with
+  // f = 0 are inactive: no hops in or out. Propensities of reactions whose species are
+  // confined (their first reactant, or first product for order 0, decides) scale by f
+  // (order 0), 1 (order 1) or 1/f (order 2), and are 0 where f = 0. Copies sitting in a
+  // compartment that becomes inactive move to the nearest active one (breadth first over
+  // face neighbours, ties by compartment index and face order), so none is lost; throws
+  // std::runtime_error if they have nowhere to go, std::invalid_argument for fractions
+  // outside [0, 1] or of the wrong size. Call between advances; only compartments whose
+  // rates changed are recomputed. Unconfined species (the default) behave as f = a = 1.
+  virtual void setConfinement(Index species, const std::vector<double>& volume,
+                              const std::vector<std::array<double, 6>>& faces) = 0;
 
   virtual std::int64_t events() const = 0;
   // Events fired per reaction (index as in the model); diffusion hops counted apart.

@@ -31,6 +31,15 @@ struct SpeciesDef {
   double diffusion = 0.0;  // nm^2/s
 };
 
+// The side of a closed membrane a species is confined to (thesis 2.2.4.2); an empty
+// membrane name means unconfined. Kept apart from SpeciesDef: the engine only sees the
+// fractions it is given (ChemistryEngine::setConfinement), sim/ computes them.
+struct SpeciesSide {
+  std::string membrane;
+  bool outside = false;
+  bool operator==(const SpeciesSide&) const = default;
+};
+
 struct Stoichiometry {
   Index species;
   int count;

@@ -15,13 +15,16 @@ void DirectMethodEngine::recompute(Index c) {
   const int* n = &copies_[static_cast<std::size_t>(c) * S_];
   for (Index r = 0; r < R_; ++r) {
     const std::size_t i = static_cast<std::size_t>(c) * R_ + r;
-    propensity_[i] = factor_[i] * net_.kernels[r].constant * combinations(net_.kernels[r], n);
+    propensity_[i] =
+        factor_[i] * net_.kernels[r].constant * confinementScale(c, r) * combinations(net_.kernels[r], n);
   }
   const std::uint8_t mask = faces_.mask(c);
-  for (Index s = 0; s < S_; ++s)
+  for (Index s = 0; s < S_; ++s) {
+    const double* confined_rate = confined(s) ? faceRates(c, s) : nullptr;
     for (int f = 0; f < 6; ++f)
       propensity_[static_cast<std::size_t>(C_) * R_ + (static_cast<std::size_t>(c) * S_ + s) * 6 + f] =
-          (mask >> f & 1) ? net_.hopRate[s] * n[s] : 0.0;
+          confined_rate ? confined_rate[f] * n[s] : (mask >> f & 1) ? net_.hopRate[s] * n[s] : 0.0;
+  }
 }
 
 double DirectMethodEngine::sum() const {

@@ -21,6 +21,7 @@ class DirectMethodEngine final : public EngineBase {
 
  private:
   void recompute(Index c);
+  void refreshCompartment(Index c) override { recompute(c); }
   double sum() const;
   void fire(std::size_t channel);
 

@@ -18,6 +18,10 @@ class EngineBase : public ChemistryEngine {
   const RandomStream& random() const override { return rng_; }
   void restore(const RandomStream& stream, double time, std::int64_t events,
                const std::vector<std::int64_t>& reaction_events, std::int64_t diffusion_events) override;
+  // Stores the confinement, relocates stranded copies, then lets the engine recompute
+  // the compartments whose rates changed (refreshCompartment).
+  void setConfinement(Index species, const std::vector<double>& volume,
+                      const std::vector<std::array<double, 6>>& faces) override;
 
  protected:
   // Throws InputError for an invalid model or negative copies, std::invalid_argument
@@ -31,6 +35,24 @@ class EngineBase : public ChemistryEngine {
   void checkCopies(Index compartment, Index species, int n) const;
   void checkRateFactor(Index reaction, Index compartment, double factor) const;
 
+  // Recomputes every propensity of compartment c from copies_ and the rates.
+  virtual void refreshCompartment(Index c) = 0;
+
+  bool confined(Index species) const { return confined_[species] != 0; }
+  // Per-copy hop rate of a confined species out of c, in total and through face f.
+  double hopOut(Index c, Index s) const { return hop_out_[static_cast<std::size_t>(c) * S_ + s]; }
+  const double* faceRates(Index c, Index s) const { return &face_rate_[(static_cast<std::size_t>(c) * S_ + s) * 6]; }
+  // Factor by which confinement scales reaction r's propensity in compartment c.
+  double confinementScale(Index c, Index r) const {
+    const Index s = scale_species_[r];
+    if (s < 0) return 1.0;
+    const double f = volume_[static_cast<std::size_t>(c) * S_ + s];
+    if (!(f > 0.0)) return 0.0;
+    const int order = reaction_order_[r];
+    return order == 0 ? f : order == 2 ? 1.0 / f : 1.0;
+  }
+  bool active(Index c, Index s) const { return !confined(s) || volume_[static_cast<std::size_t>(c) * S_ + s] > 0.0; }
+
   ReactionNetwork net_;
   GridFaces faces_;
   Index S_, R_, C_;          // species, reactions, compartments
@@ -40,6 +62,17 @@ class EngineBase : public ChemistryEngine {
   std::int64_t events_ = 0;
   std::vector<std::int64_t> reaction_events_;
   std::int64_t diffusion_events_ = 0;
+
+ private:
+  // Moves copies of s out of inactive compartments; returns the compartments touched.
+  void relocate(Index s, std::vector<char>& dirty);
+
+  std::vector<char> confined_;         // per species
+  std::vector<Index> side_species_;    // per reaction: the species whose side it lives on
+  std::vector<int> reaction_order_;    // per reaction
+  std::vector<Index> scale_species_;   // per reaction: side_species_ once confined, else -1
+  // Allocated at the first setConfinement: [c * S + s] and [(c * S + s) * 6 + face].
+  std::vector<double> volume_, hop_out_, face_rate_;
 };
 
 }  // namespace cortex

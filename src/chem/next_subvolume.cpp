@@ -32,7 +32,7 @@ void NextSubvolumeEngine::refresh(Index c) {
   for (Index b = 0; b < blocks_; ++b) {
     double sum = 0.0;
     for (Index r = b * kBlock; r < std::min(R_, (b + 1) * kBlock); ++r) {
-      propensity_[base + r] = rate_[base + r] * combinations(net_.kernels[r], n);
+      propensity_[base + r] = rate_[base + r] * confinementScale(c, r) * combinations(net_.kernels[r], n);
       sum += propensity_[base + r];
     }
     block_sum_[static_cast<std::size_t>(c) * blocks_ + b] = sum;
@@ -40,13 +40,14 @@ void NextSubvolumeEngine::refresh(Index c) {
   }
   v.faces = GridFaces::count(faces_.mask(c));
   double hops = 0.0;
-  for (Index s : net_.diffusing) hops += net_.hopRate[s] * n[s];
-  v.diffusion = v.faces * hops;
+  for (Index s : net_.diffusing) hops += hopOutOf(c, s) * n[s];
+  v.diffusion = hops;
 }
 
 void NextSubvolumeEngine::setPropensity(Index c, Index r) {
   const std::size_t i = static_cast<std::size_t>(c) * R_ + r;
-  const double p = rate_[i] * combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(c) * S_]);
+  const double p =
+      rate_[i] * confinementScale(c, r) * combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(c) * S_]);
   const double delta = p - propensity_[i];
   propensity_[i] = p;
   block_sum_[static_cast<std::size_t>(c) * blocks_ + r / kBlock] += delta;
@@ -55,7 +56,7 @@ void NextSubvolumeEngine::setPropensity(Index c, Index r) {
 
 void NextSubvolumeEngine::changeCopies(Index c, Index s, int delta) {
   copies_[static_cast<std::size_t>(c) * S_ + s] += delta;
-  sub_[c].diffusion += delta * sub_[c].faces * net_.hopRate[s];
+  sub_[c].diffusion += delta * hopOutOf(c, s);
   for (Index r : net_.dependents[s]) setPropensity(c, r);
 }
 
@@ -134,7 +135,7 @@ void NextSubvolumeEngine::react(Index c, Index r) {
   int* n = &copies_[static_cast<std::size_t>(c) * S_];
   for (const SpeciesChange& change : net_.changes[r]) {
     n[change.species] += change.delta;
-    v.diffusion += change.delta * v.faces * net_.hopRate[change.species];
+    v.diffusion += change.delta * hopOutOf(c, change.species);
   }
   for (Index dependent : net_.affected[r]) setPropensity(c, dependent);
 }
@@ -147,7 +148,7 @@ bool NextSubvolumeEngine::hop(Index c, double x, double t) {
   Index s = -1;
   double w = 0.0;
   for (Index d : net_.diffusing) {
-    w = faces * net_.hopRate[d] * n[d];
+    w = hopOutOf(c, d) * n[d];
     if (x < w) {
       s = d;
       break;
@@ -155,7 +156,23 @@ bool NextSubvolumeEngine::hop(Index c, double x, double t) {
     x -= w;
   }
   if (s < 0) return false;
-  const Index dest = faces_.neighbour(c, std::min(static_cast<int>(x / w * faces), faces - 1));
+  Index dest;
+  if (!confined(s)) {
+    dest = faces_.neighbour(c, std::min(static_cast<int>(x / w * faces), faces - 1));
+  } else {
+    // Faces weighted by their rates a_face / f; what is left of x picks one.
+    const double* rate = faceRates(c, s);
+    double y = x / n[s];
+    int face = -1;
+    for (int f = 0; f < 6; ++f) {
+      if (!(rate[f] > 0.0)) continue;
+      face = f;
+      if (y < rate[f]) break;
+      y -= rate[f];
+    }
+    if (face < 0) return false;
+    dest = faces_.across(c, face);
+  }
 
   changeCopies(c, s, -1);
   // Gibson-Bruck: the destination did not fire, so its pending time is rescaled to the

@@ -36,12 +36,15 @@ class NextSubvolumeEngine final : public EngineBase {
 
   struct Subvolume {
     double reactions = 0.0;  // sum of reaction propensities
-    double diffusion = 0.0;  // faces * sum_s hopRate_s * n_s
+    double diffusion = 0.0;  // sum_s hopOutOf(c, s) * n_s
     int faces = 0;           // faces with a neighbour
   };
   static double total(const Subvolume& v) { return std::max(v.reactions, 0.0) + std::max(v.diffusion, 0.0); }
 
   void refresh(Index c);
+  void refreshCompartment(Index c) override { refresh(c); }
+  // Per-copy hop rate of species s out of c: all faces alike unless s is confined.
+  double hopOutOf(Index c, Index s) const { return confined(s) ? hopOut(c, s) : sub_[c].faces * net_.hopRate[s]; }
   void setPropensity(Index c, Index r);
   void changeCopies(Index c, Index s, int delta);
   void fire(Index c, double t);

@@ -25,16 +25,29 @@ CompartmentGrid readGrid(const ConfigReader& r) {
   return g;
 }
 
-SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3) {
+SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const std::vector<MembraneConfig>& membranes) {
   SpeciesConfig s;
   s.def.name = r.string("name", "");
   if (s.def.name.empty() || s.def.name.find_first_of(" \t/+>") != std::string::npos)
     r.fail("name", "must be a non-empty name without spaces, '/', '+' or '>'");
   s.def.diffusion = r.number("diffusion", 0.0, Range::nonNegative(), "nm^2/s");
-  for (const char* k : {"inside", "outside"})
-    if (r.has(k)) r.fail(k, "confinement by membranes is not supported yet in this version");
+  for (const char* k : {"inside", "outside"}) {
+    if (!r.has(k)) continue;
+    if (!s.side.membrane.empty()) r.fail(k, "give either inside or outside, not both");
+    s.side.membrane = r.string(k, "");
+    s.side.outside = std::string(k) == "outside";
+    const MembraneConfig* m = nullptr;
+    for (const MembraneConfig& mc : membranes)
+      if (mc.name == s.side.membrane) m = &mc;
+    if (!m) r.fail(k, fmt::format("no membrane is named \"{}\"", s.side.membrane));
+    // Loaded meshes are checked once read (sim/confinement.cpp).
+    if (m->shape == "plane") r.fail(k, fmt::format("membrane \"{}\" is open and confines nothing", s.side.membrane));
+  }
   const bool by_copies = r.has("copies"), by_concentration = r.has("concentration");
   if (by_copies && by_concentration) r.fail("concentration", "give either copies or concentration, not both");
+  // A concentration would need the confined volume, known only once the membrane is built.
+  if (by_concentration && !s.side.membrane.empty())
+    r.fail("concentration", "give copies for a species confined by a membrane");
   if (by_copies) s.copies = r.integer("copies", 0, 0, 2'000'000'000);
   if (by_concentration) {
     const double c = r.requiredNumber("concentration", Range::nonNegative(), "µM");
@@ -47,7 +60,7 @@ SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3) {
 
 }  // namespace
 
-std::optional<ChemistryConfig> readChemistry(const ConfigReader& root) {
+std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
   const auto species = root.tableArray("species");
   if (species.empty()) {
     for (const char* k : {"reaction", "compartments", "chemistry"})
@@ -63,11 +76,12 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root) {
   }
   const double box = c.model.grid.volume() * c.model.grid.count();
   for (std::size_t i = 0; i < species.size(); ++i) {
-    SpeciesConfig s = readSpecies(species[i], box);
+    SpeciesConfig s = readSpecies(species[i], box, membranes);
     for (const SpeciesDef& other : c.model.species)
       if (other.name == s.def.name) species[i].fail("name", fmt::format("\"{}\" is declared twice", s.def.name));
     c.model.species.push_back(s.def);
     c.initial_copies.push_back(s.copies);
+    c.sides.push_back(s.side);
   }
   for (const ConfigReader& r : root.tableArray("reaction")) {
     const std::string equation = r.string("equation", "");
@@ -78,6 +92,17 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root) {
     } catch (const InputError& e) {
       r.fail("equation", e.what());
     }
+    // Confinement scales a propensity by one volume fraction, so a reaction cannot mix
+    // species confined to different sides.
+    const ReactionDef& def = c.model.reactions.back();
+    std::vector<Index> involved;
+    for (const auto& x : def.reactants) involved.push_back(x.species);
+    for (const auto& x : def.products) involved.push_back(x.species);
+    for (Index sp : involved)
+      if (!(c.sides[sp] == c.sides[involved.front()]))
+        r.fail("equation", fmt::format("species \"{}\" and \"{}\" are confined to different sides of membranes; "
+                                       "a reaction needs all its species on one side",
+                                       c.model.species[involved.front()].name, c.model.species[sp].name));
     r.finish();
   }
   return c;

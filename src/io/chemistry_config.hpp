@@ -11,6 +11,7 @@ namespace cortex {
 
 // Empty when the config has no [[species]] (then [[reaction]] and [compartments] are
 // errors: they would be ignored).
-std::optional<ChemistryConfig> readChemistry(const ConfigReader& root);
+// `membranes` resolves the inside / outside keys of [[species]].
+std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std::vector<MembraneConfig>& membranes);
 
 }  // namespace cortex

@@ -162,7 +162,7 @@ Config parseConfig(const std::string& text, const std::string& source,
       if (c.membranes[j].name == c.membranes[i].name)
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
   }
-  c.chemistry = readChemistry(r);
+  c.chemistry = readChemistry(r, c.membranes);
   if (c.membranes.empty() && !c.chemistry)
     throw InputError(fmt::format("{}: no [[membrane]] and no [[species]] given: nothing to simulate", source));
   r.finish();

@@ -16,6 +16,7 @@
 #include "io/summary.hpp"
 #include "io/trajectory_writer.hpp"
 #include "sim/chemistry_builder.hpp"
+#include "sim/confinement.hpp"
 #include "sim/membrane_builder.hpp"
 #include "sim/simulation.hpp"
 
@@ -59,10 +60,18 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
       RandomStream random(seed, StreamId::kChemistry);
       random.restore(s.random_counter, s.random_used);
       engine->restore(random, s.time, s.events, s.reaction_events, s.diffusion_events);
-      system->setChemistry(config.chemistry->model, std::move(engine));
+      system->setChemistry(config.chemistry->model, std::move(engine), config.chemistry->sides);
     } else {
-      system->setChemistry(config.chemistry->model, buildChemistry(*config.chemistry, seed));
+      // Confined species start uniform in the volume on their side of the membrane.
+      std::vector<std::vector<double>> weights(config.chemistry->sides.size());
+      const auto fractions = speciesFractions(*system, config.chemistry->sides, config.chemistry->model.grid);
+      for (std::size_t s = 0; s < fractions.size(); ++s)
+        if (fractions[s]) weights[s] = fractions[s]->volume;
+      system->setChemistry(config.chemistry->model, buildChemistry(*config.chemistry, seed, weights),
+                           config.chemistry->sides);
     }
+    // The membrane as built or restored decides the confinement: nothing is stored for it.
+    confineChemistry(*system);
   }
   return system;
 }

@@ -1,5 +1,7 @@
 // Creates the chemistry engine a config asks for, with the initial copies spread
-// uniformly at random over the compartments (stream kInitialConditions).
+// uniformly at random in volume (stream kInitialConditions): over the compartments, or,
+// for a confined species, over its side of the membrane (compartments weighted by their
+// volume fraction there).
 #pragma once
 
 #include <memory>
@@ -8,7 +10,11 @@
 
 namespace cortex {
 
-std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed);
-std::unique_ptr<ChemistryEngine> buildChemistry(const ChemistryConfig& config, std::uint64_t seed);
+// `volume_weights` per species: empty for uniform over the compartments, else one
+// non-negative weight per compartment (not all zero when the species has copies).
+std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed,
+                               const std::vector<std::vector<double>>& volume_weights = {});
+std::unique_ptr<ChemistryEngine> buildChemistry(const ChemistryConfig& config, std::uint64_t seed,
+                                                const std::vector<std::vector<double>>& volume_weights = {});
 
 }  // namespace cortex

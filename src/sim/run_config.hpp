@@ -39,17 +39,19 @@ struct MembraneConfig {
   double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)
 };
 
-// Initial amount of a 3D species: copies in the whole box, spread uniformly at random
-// over the compartments.
+// Initial amount of a 3D species: copies in the whole box (or, when confined, in the
+// volume on its side of the membrane), spread uniformly at random in that volume.
 struct SpeciesConfig {
   SpeciesDef def;
   std::int64_t copies = 0;
+  SpeciesSide side;
 };
 
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
   ChemistryModel model;                 // grid, species, reactions (rates in config units)
   std::vector<std::int64_t> initial_copies;  // per species, whole box
+  std::vector<SpeciesSide> sides;            // per species
 };
 
 struct Config {

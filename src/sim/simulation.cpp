@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "mesh/mesh_quality.hpp"
+#include "sim/confinement.hpp"
 
 namespace cortex {
 
@@ -94,6 +95,8 @@ MinimizationResult Simulation::relax() {
   c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   remeshMembranes();
   checkMeshes();
+  // The membranes moved (and may have been remeshed): re-slice the grid for confined species.
+  confineChemistry(system_);
   if (!r.converged) {
     ++c.unconverged_minimizations;
     spdlog::warn("t = {:.6g} s: minimization stopped before convergence after {} iterations "

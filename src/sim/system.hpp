@@ -27,11 +27,15 @@ class System {
   // Takes ownership of the membranes, lays out their coordinates and builds the force field.
   explicit System(std::vector<std::unique_ptr<Membrane>> membranes);
 
-  // 3D reaction-diffusion, if the config has species.
-  void setChemistry(ChemistryModel model, std::unique_ptr<ChemistryEngine> engine) {
+  // 3D reaction-diffusion, if the config has species; `sides` per species (may be empty:
+  // nothing confined).
+  void setChemistry(ChemistryModel model, std::unique_ptr<ChemistryEngine> engine,
+                    std::vector<SpeciesSide> sides = {}) {
     chemistry_model_ = std::move(model);
     chemistry_ = std::move(engine);
+    species_sides_ = std::move(sides);
   }
+  const std::vector<SpeciesSide>& speciesSides() const { return species_sides_; }
   ChemistryEngine* chemistry() { return chemistry_.get(); }
   const ChemistryEngine* chemistry() const { return chemistry_.get(); }
   const ChemistryModel& chemistryModel() const { return chemistry_model_; }
@@ -63,6 +67,7 @@ class System {
   ForceField force_field_;
   ChemistryModel chemistry_model_;
   std::unique_ptr<ChemistryEngine> chemistry_;
+  std::vector<SpeciesSide> species_sides_;
   double time_ = 0.0;
 };
 

@@ -1,0 +1,191 @@
+// Membrane-confined chemistry through the whole program: a vesicle with one species
+// inside and one outside; config errors; resume bit-identical (the confinement is
+// recomputed from the restored membrane, nothing is stored for it).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "app/cli_helpers.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace cortex::cli_test {
+namespace {
+
+constexpr double kH = 250.0, kRadius = 500.0, kCentre = 750.0;  // nm; 6 x 6 x 6 grid
+
+std::string confinedConfig(double end_time) {
+  return fmt::format(R"([simulation]
+seed = 3
+end_time = {}
+chemistry_window = 0.01
+snapshot_interval = 0.02
+
+[mechanics]
+minimizer = "lbfgs"
+force_tolerance = 0.5
+
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+center = [{c}, {c}, {c}]
+radius = {r}
+mesh_size = 80.0
+bending_modulus = 100.0
+area_modulus = 400.0
+volume_modulus = 0.8
+reduced_volume = 1.0
+
+[compartments]
+size = {h}
+shape = [6, 6, 6]
+
+[[species]]
+name = "A"
+diffusion = 1.0e6
+copies = 2000
+inside = "vesicle"
+
+[[species]]
+name = "B"
+diffusion = 1.0e5
+copies = 0
+inside = "vesicle"
+
+[[species]]
+name = "C"
+diffusion = 1.0e6
+copies = 1000
+outside = "vesicle"
+
+[[reaction]]
+equation = "2 A -> B"
+rate = 0.05
+
+[[reaction]]
+equation = "B -> 2 A"
+rate = 2.0
+)",
+                     end_time, fmt::arg("c", kCentre), fmt::arg("r", kRadius), fmt::arg("h", kH));
+}
+
+std::int64_t sum(const std::vector<std::int32_t>& v) { return std::accumulate(v.begin(), v.end(), std::int64_t{0}); }
+
+// Distances from the vesicle centre to the nearest and farthest points of a compartment.
+std::pair<double, double> reach(int i, int j, int k) {
+  double near = 0.0, far = 0.0;
+  for (int x : {i, j, k}) {
+    const double lo = x * kH - kCentre, hi = (x + 1) * kH - kCentre;
+    const double n = lo > 0 ? lo : hi < 0 ? -hi : 0.0, f = std::max(std::abs(lo), std::abs(hi));
+    near += n * n;
+    far += f * f;
+  }
+  return {std::sqrt(near), std::sqrt(far)};
+}
+
+// The vesicle stays a sphere of radius ~500 nm (reduced volume 1): compartments well
+// beyond it never hold A or B, compartments well within it never hold C, and A + 2 B
+// and C are conserved.
+TEST(ConfinedChemistryRun, SpeciesStayOnTheirSide) {
+  TempDir dir;
+  const fs::path out = dir / "out";
+  const RunResult r = runConfig(writeConfig(dir.path(), confinedConfig(0.1)), out, {"--threads", "2"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const h5::File f = h5::File::openReadOnly(out / "trajectory.h5");
+  const std::vector<std::string> snapshots = f.children("/snapshots");
+  ASSERT_EQ(snapshots.size(), 6u);
+  int checked_outside = 0, checked_inside = 0;
+  for (const std::string& s : snapshots) {
+    const std::string g = "/snapshots/" + s + "/compartments/species/";
+    const auto a = f.readInt32(g + "A"), b = f.readInt32(g + "B"), c = f.readInt32(g + "C");
+    EXPECT_EQ(sum(a) + 2 * sum(b), 2000) << s;
+    EXPECT_EQ(sum(c), 1000) << s;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        for (int k = 0; k < 6; ++k) {
+          const std::size_t n = static_cast<std::size_t>((i * 6 + j) * 6 + k);  // datasets are [x][y][z]
+          const auto [near, far] = reach(i, j, k);
+          if (near > 1.04 * kRadius) {
+            EXPECT_EQ(a[n] + b[n], 0) << s << " compartment " << i << j << k;
+            ++checked_outside;
+          }
+          if (far < 0.9 * kRadius) {
+            EXPECT_EQ(c[n], 0) << s << " compartment " << i << j << k;
+            ++checked_inside;
+          }
+        }
+  }
+  EXPECT_GT(checked_outside, 0);
+  EXPECT_GT(checked_inside, 0);
+}
+
+TEST(ConfinedChemistryRun, ResumesBitIdentically) {
+  TempDir dir;
+  RunResult r = runConfig(writeConfig(dir.path(), confinedConfig(0.06), "full.toml"), dir / "A", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runConfig(writeConfig(dir.path(), confinedConfig(0.02), "half.toml"), dir / "B", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runCortex({"run", "--resume", (dir / "B").string(), "--set", "simulation.end_time=0.06", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
+  const h5::File a = h5::File::openReadOnly(dir / "A" / "trajectory.h5");
+  const h5::File b = h5::File::openReadOnly(dir / "B" / "trajectory.h5");
+  ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
+  for (const std::string& s : a.children("/snapshots"))
+    for (const char* species : {"A", "B", "C"}) {
+      const std::string path = "/snapshots/" + s + "/compartments/species/" + species;
+      EXPECT_EQ(a.readInt32(path), b.readInt32(path)) << path;
+    }
+}
+
+void expectCheckFails(const std::string& text, const std::string& key, const std::string& words) {
+  TempDir dir;
+  const RunResult r = runCortex({"check", writeConfig(dir.path(), text).string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+}
+
+TEST(ConfinedChemistryRun, BadConfinementNamesTheKey) {
+  std::string unknown = confinedConfig(0.1);
+  unknown.replace(unknown.find("inside = \"vesicle\""), 18, "inside = \"cell\"");
+  expectCheckFails(unknown, "species.0.inside", "cell");
+
+  std::string both = confinedConfig(0.1);
+  both.replace(both.find("inside = \"vesicle\""), 18, "inside = \"vesicle\"\noutside = \"vesicle\"");
+  expectCheckFails(both, "species.0.outside", "not both");
+
+  std::string concentration = confinedConfig(0.1);
+  concentration.replace(concentration.find("copies = 2000"), 13, "concentration = 1.0");
+  expectCheckFails(concentration, "species.0.concentration", "confined");
+
+  std::string mixed = confinedConfig(0.1);
+  mixed.replace(mixed.find("2 A -> B"), 8, "A + C -> B");
+  expectCheckFails(mixed, "reaction.0.equation", "different sides");
+
+  const std::string open = R"([[membrane]]
+name = "sheet"
+shape = "plane"
+size = [1000.0, 1000.0]
+mesh_size = 100.0
+bending_modulus = 100.0
+
+[[species]]
+name = "A"
+diffusion = 1.0e6
+copies = 10
+outside = "sheet"
+)";
+  expectCheckFails(open, "species.0.outside", "open");
+}
+
+TEST(ConfinedChemistryRun, ExampleIsAccepted) {
+  TempDir dir;
+  const RunResult r =
+      runCortex({"check", (sourceDir() / "examples" / "vesicle_confined_species.toml").string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << describe(r);
+}
+
+}  // namespace
+}  // namespace cortex::cli_test
