@@ -22,6 +22,10 @@ struct CompartmentGrid {
   double volume() const { return size * size * size; }  // nm^3
   // Face neighbours of c (up to 6; walls are reflective, so missing ones are absent).
   int neighbours(Index c, std::array<Index, 6>& out) const;
+  Vec3 centre(Index c) const {
+    const auto ijk = coords(c);
+    return Vec3((ijk[0] + 0.5) * size, (ijk[1] + 0.5) * size, (ijk[2] + 0.5) * size);
+  }
   // Compartment holding point x (nm), clamped to the box.
   Index locate(const Vec3& x) const;
 };

@@ -58,6 +58,18 @@ SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const st
   return s;
 }
 
+std::optional<BoxRegion> readRegion(const ConfigReader& reaction, const CompartmentGrid& grid) {
+  const std::optional<ConfigReader> r = reaction.table("region");
+  if (!r) return std::nullopt;
+  const auto lo = r->numbers("min", 3, Range{}, "nm"), hi = r->numbers("max", 3, Range{}, "nm");
+  r->finish();
+  BoxRegion box{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
+  if (!(box.min.array() < box.max.array()).all()) reaction.fail("region", "min must be below max on every axis");
+  for (Index c = 0; c < grid.count(); ++c)
+    if (box.contains(grid.centre(c))) return box;
+  reaction.fail("region", "contains no compartment centre: the reaction could never fire");
+}
+
 }  // namespace
 
 std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
@@ -86,7 +98,7 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
   for (const ConfigReader& r : root.tableArray("reaction")) {
     const std::string equation = r.string("equation", "");
     const double rate = r.requiredNumber("rate", Range::nonNegative(), "(1/s, 1/(µM s) or µM/s by order)");
-    if (r.has("region")) r.fail("region", "restricting reactions to regions is not supported yet in this version");
+    c.reaction_regions.push_back(readRegion(r, c.model.grid));
     try {
       c.model.reactions.push_back(parseReaction(equation, rate, c.model.species));
     } catch (const InputError& e) {

@@ -70,7 +70,9 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
       system->setChemistry(config.chemistry->model, buildChemistry(*config.chemistry, seed, weights),
                            config.chemistry->sides);
     }
-    // The membrane as built or restored decides the confinement: nothing is stored for it.
+    // The membrane as built or restored decides the confinement, and the config the
+    // regions: nothing is stored for either.
+    applyReactionRegions(*config.chemistry, *system->chemistry());
     confineChemistry(*system);
   }
   return system;

@@ -47,10 +47,18 @@ struct SpeciesConfig {
   SpeciesSide side;
 };
 
+// An axis-aligned box (nm): a reaction with a region fires only in the compartments
+// whose centres lie inside it.
+struct BoxRegion {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  bool contains(const Vec3& x) const { return (x.array() >= min.array()).all() && (x.array() <= max.array()).all(); }
+};
+
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
   ChemistryModel model;                 // grid, species, reactions (rates in config units)
   std::vector<std::int64_t> initial_copies;  // per species, whole box
+  std::vector<std::optional<BoxRegion>> reaction_regions;  // per reaction
   std::vector<SpeciesSide> sides;            // per species
 };
 

@@ -10,8 +10,9 @@
 namespace cortex::cli_test {
 namespace {
 
-// A <-> B in a 4 x 3 x 2 grid, plus inflow and decay of C: copies of A + B are conserved
-// exactly, C fluctuates.
+// A <-> B in a 4 x 3 x 2 grid, plus inflow and decay of an immobile C produced only in
+// the half x < 400 nm (a reaction region): copies of A + B are conserved exactly, and C
+// exists only in that half.
 std::string chemistryConfig(double end_time) {
   return fmt::format(R"([simulation]
 seed = 5
@@ -35,7 +36,7 @@ copies = 1000
 
 [[species]]
 name = "C"
-diffusion = 1.0e5
+diffusion = 0.0
 copies = 0
 
 [[reaction]]
@@ -49,6 +50,7 @@ rate = 10.0
 [[reaction]]
 equation = "-> C"
 rate = 50.0
+region = {{ min = [0.0, 0.0, 0.0], max = [400.0, 600.0, 400.0] }}
 
 [[reaction]]
 equation = "C ->"
@@ -74,6 +76,12 @@ TEST(ChemistryRun, WritesCompartmentCountsAndConservesCopies) {
     EXPECT_EQ(shape, (h5::Shape{4, 3, 2}));
     EXPECT_EQ(sum(a) + sum(b), 4000) << "snapshot " << s << ": A <-> B must conserve A + B";
   }
+  // C: immobile, produced only where x < 400 nm; in the (4, 3, 2) C-order array x is the first index.
+  const auto c_last = f.readInt32("/snapshots/" + snapshots.back() + "/compartments/species/C");
+  std::int64_t inside = 0, outside = 0;
+  for (std::size_t n = 0; n < c_last.size(); ++n) (n / 6 < 2 ? inside : outside) += c_last[n];
+  EXPECT_GT(inside, 10);
+  EXPECT_EQ(outside, 0) << "the region restricts -> C to x < 400 nm";
   const nlohmann::json summary = readJson(out / "summary.json");
   const std::string last = "/snapshots/" + snapshots.back() + "/compartments/species/";
   for (const char* species : {"A", "B", "C"})
