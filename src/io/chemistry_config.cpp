@@ -25,24 +25,31 @@ CompartmentGrid readGrid(const ConfigReader& r) {
   return g;
 }
 
+// `inside = "NAME"` or `outside = "NAME"`: a side of a closed membrane (or none).
+SpeciesSide readSide(const ConfigReader& r, const std::vector<MembraneConfig>& membranes) {
+  SpeciesSide side;
+  for (const char* k : {"inside", "outside"}) {
+    if (!r.has(k)) continue;
+    if (!side.membrane.empty()) r.fail(k, "give either inside or outside, not both");
+    side.membrane = r.string(k, "");
+    side.outside = std::string(k) == "outside";
+    const MembraneConfig* m = nullptr;
+    for (const MembraneConfig& mc : membranes)
+      if (mc.name == side.membrane) m = &mc;
+    if (!m) r.fail(k, fmt::format("no membrane is named \"{}\"", side.membrane));
+    // Loaded meshes are checked once read (sim/confinement.cpp).
+    if (m->shape == "plane") r.fail(k, fmt::format("membrane \"{}\" is open and confines nothing", side.membrane));
+  }
+  return side;
+}
+
 SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const std::vector<MembraneConfig>& membranes) {
   SpeciesConfig s;
   s.def.name = r.string("name", "");
   if (s.def.name.empty() || s.def.name.find_first_of(" \t/+>") != std::string::npos)
     r.fail("name", "must be a non-empty name without spaces, '/', '+' or '>'");
   s.def.diffusion = r.number("diffusion", 0.0, Range::nonNegative(), "nm^2/s");
-  for (const char* k : {"inside", "outside"}) {
-    if (!r.has(k)) continue;
-    if (!s.side.membrane.empty()) r.fail(k, "give either inside or outside, not both");
-    s.side.membrane = r.string(k, "");
-    s.side.outside = std::string(k) == "outside";
-    const MembraneConfig* m = nullptr;
-    for (const MembraneConfig& mc : membranes)
-      if (mc.name == s.side.membrane) m = &mc;
-    if (!m) r.fail(k, fmt::format("no membrane is named \"{}\"", s.side.membrane));
-    // Loaded meshes are checked once read (sim/confinement.cpp).
-    if (m->shape == "plane") r.fail(k, fmt::format("membrane \"{}\" is open and confines nothing", s.side.membrane));
-  }
+  s.side = readSide(r, membranes);
   const bool by_copies = r.has("copies"), by_concentration = r.has("concentration");
   if (by_copies && by_concentration) r.fail("concentration", "give either copies or concentration, not both");
   // A concentration would need the confined volume, known only once the membrane is built.
@@ -98,7 +105,7 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
   for (const ConfigReader& r : root.tableArray("reaction")) {
     const std::string equation = r.string("equation", "");
     const double rate = r.requiredNumber("rate", Range::nonNegative(), "(1/s, 1/(µM s) or µM/s by order)");
-    c.reaction_regions.push_back(readRegion(r, c.model.grid));
+    ReactionRestriction restriction{readRegion(r, c.model.grid), readSide(r, membranes)};
     try {
       c.model.reactions.push_back(parseReaction(equation, rate, c.model.species));
     } catch (const InputError& e) {
@@ -115,6 +122,13 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
         r.fail("equation", fmt::format("species \"{}\" and \"{}\" are confined to different sides of membranes; "
                                        "a reaction needs all its species on one side",
                                        c.model.species[involved.front()].name, c.model.species[sp].name));
+    if (!restriction.side.membrane.empty())
+      for (Index sp : involved)
+        if (!c.sides[sp].membrane.empty())
+          r.fail(restriction.side.outside ? "outside" : "inside",
+                 fmt::format("species \"{}\" is confined already and the reaction follows it; restrict "
+                             "reactions of unconfined species only", c.model.species[sp].name));
+    c.reaction_restrictions.push_back(std::move(restriction));
     r.finish();
   }
   return c;

@@ -70,9 +70,9 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
       system->setChemistry(config.chemistry->model, buildChemistry(*config.chemistry, seed, weights),
                            config.chemistry->sides);
     }
-    // The membrane as built or restored decides the confinement, and the config the
-    // regions: nothing is stored for either.
-    applyReactionRegions(*config.chemistry, *system->chemistry());
+    // The membranes as built or restored decide the confinement, and the config the
+    // reaction restrictions: nothing is stored for either.
+    system->setReactionRestrictions(config.chemistry->reaction_restrictions);
     confineChemistry(*system);
   }
   return system;

@@ -47,13 +47,4 @@ std::unique_ptr<ChemistryEngine> buildChemistry(const ChemistryConfig& config, s
   return makeChemistryEngine(config.engine, config.model, initialCopies(config, seed, volume_weights), seed);
 }
 
-void applyReactionRegions(const ChemistryConfig& config, ChemistryEngine& engine) {
-  const CompartmentGrid& grid = config.model.grid;
-  for (std::size_t r = 0; r < config.reaction_regions.size(); ++r) {
-    if (!config.reaction_regions[r]) continue;
-    for (Index c = 0; c < grid.count(); ++c)
-      if (!config.reaction_regions[r]->contains(grid.centre(c))) engine.setRateFactor(static_cast<Index>(r), c, 0.0);
-  }
-}
-
 }  // namespace cortex

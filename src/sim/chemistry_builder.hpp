@@ -17,8 +17,4 @@ std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed
 std::unique_ptr<ChemistryEngine> buildChemistry(const ChemistryConfig& config, std::uint64_t seed,
                                                 const std::vector<std::vector<double>>& volume_weights = {});
 
-// Switches reactions with a region off (rate factor 0) outside it. Part of building an
-// engine, fresh or restored: rate factors are not stored in checkpoints.
-void applyReactionRegions(const ChemistryConfig& config, ChemistryEngine& engine);
-
 }  // namespace cortex

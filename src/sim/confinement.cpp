@@ -42,9 +42,27 @@ std::vector<std::optional<SideFractions>> speciesFractions(const System& system,
 void confineChemistry(System& system) {
   ChemistryEngine* engine = system.chemistry();
   if (!engine) return;
-  const auto fractions = speciesFractions(system, system.speciesSides(), system.chemistryModel().grid);
-  for (std::size_t s = 0; s < fractions.size(); ++s)
+  const CompartmentGrid& grid = system.chemistryModel().grid;
+  // Species sides first, then reaction sides: each membrane is sliced once for both.
+  std::vector<SpeciesSide> sides = system.speciesSides();
+  const std::size_t species = sides.size();
+  for (const ReactionRestriction& r : system.reactionRestrictions()) sides.push_back(r.side);
+  const auto fractions = speciesFractions(system, sides, grid);
+  for (std::size_t s = 0; s < species; ++s)
     if (fractions[s]) engine->setConfinement(static_cast<Index>(s), fractions[s]->volume, fractions[s]->faces);
+  // A restricted reaction fires at the rate of the part of each compartment it may use:
+  // none outside its box, and the volume fraction on its side of a membrane (reactants
+  // spread uniformly over the compartment, so that fraction of them is there).
+  for (std::size_t r = 0; r < system.reactionRestrictions().size(); ++r) {
+    const ReactionRestriction& restriction = system.reactionRestrictions()[r];
+    if (!restriction.restricted()) continue;
+    const auto& side = fractions[species + r];
+    for (Index c = 0; c < grid.count(); ++c) {
+      double factor = side ? side->volume[c] : 1.0;
+      if (restriction.region && !restriction.region->contains(grid.centre(c))) factor = 0.0;
+      engine->setRateFactor(static_cast<Index>(r), c, factor);
+    }
+  }
 }
 
 }  // namespace cortex

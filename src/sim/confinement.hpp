@@ -22,7 +22,9 @@ struct SideFractions {
 std::vector<std::optional<SideFractions>> speciesFractions(const System& system, const std::vector<SpeciesSide>& sides,
                                                            const CompartmentGrid& grid);
 
-// Re-slices and applies to the engine; nothing when no species is confined.
+// Re-slices and applies to the engine: species confinement, and the rate factors of
+// reactions restricted to a box or a side of a membrane. Called when the engine is
+// built or restored and after every relaxation (membranes move).
 void confineChemistry(System& system);
 
 }  // namespace cortex

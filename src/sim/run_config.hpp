@@ -54,11 +54,19 @@ struct BoxRegion {
   bool contains(const Vec3& x) const { return (x.array() >= min.array()).all() && (x.array() <= max.array()).all(); }
 };
 
+// Where a reaction may fire: in a box, and/or on one side of a membrane (for reactions
+// of unconfined species; confined species carry their side themselves).
+struct ReactionRestriction {
+  std::optional<BoxRegion> region;
+  SpeciesSide side;
+  bool restricted() const { return region.has_value() || !side.membrane.empty(); }
+};
+
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
   ChemistryModel model;                 // grid, species, reactions (rates in config units)
   std::vector<std::int64_t> initial_copies;  // per species, whole box
-  std::vector<std::optional<BoxRegion>> reaction_regions;  // per reaction
+  std::vector<ReactionRestriction> reaction_restrictions;  // per reaction
   std::vector<SpeciesSide> sides;            // per species
 };
 

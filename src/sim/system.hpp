@@ -8,6 +8,7 @@
 
 #include "chem/chemistry_engine.hpp"
 #include "mech/force_field.hpp"
+#include "sim/run_config.hpp"
 #include "membrane/membrane.hpp"
 
 namespace cortex {
@@ -36,6 +37,9 @@ class System {
     species_sides_ = std::move(sides);
   }
   const std::vector<SpeciesSide>& speciesSides() const { return species_sides_; }
+  // Per reaction: where it may fire (run_config.hpp); applied with the confinement.
+  void setReactionRestrictions(std::vector<ReactionRestriction> r) { reaction_restrictions_ = std::move(r); }
+  const std::vector<ReactionRestriction>& reactionRestrictions() const { return reaction_restrictions_; }
   ChemistryEngine* chemistry() { return chemistry_.get(); }
   const ChemistryEngine* chemistry() const { return chemistry_.get(); }
   const ChemistryModel& chemistryModel() const { return chemistry_model_; }
@@ -68,6 +72,7 @@ class System {
   ChemistryModel chemistry_model_;
   std::unique_ptr<ChemistryEngine> chemistry_;
   std::vector<SpeciesSide> species_sides_;
+  std::vector<ReactionRestriction> reaction_restrictions_;
   double time_ = 0.0;
 };
 

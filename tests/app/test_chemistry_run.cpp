@@ -123,5 +123,50 @@ TEST(ChemistryRun, BadReactionNamesTheKey) {
   EXPECT_NE(r.err.find("Q"), std::string::npos) << r.err;
 }
 
+// A reaction of an unconfined species restricted to the inside of a vesicle: its
+// product (immobile) appears only in compartments that overlap the inside.
+TEST(ChemistryRun, ReactionRestrictedToInsideOfAMembrane) {
+  TempDir dir;
+  const std::string config = R"([simulation]
+end_time = 0.1
+chemistry_window = 0.05
+snapshot_interval = 0.05
+
+[compartments]
+size = 200.0
+shape = [4, 4, 4]
+
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+mesher = "icosphere"
+center = [400.0, 400.0, 400.0]
+radius = 300.0
+mesh_size = 40.0
+
+[[species]]
+name = "C"
+diffusion = 0.0
+copies = 0
+
+[[reaction]]
+equation = "-> C"
+rate = 20.0
+inside = "vesicle"
+)";
+  const fs::path out = dir / "out";
+  const RunResult r = runConfig(writeConfig(dir.path(), config), out, {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const h5::File f = h5::File::openReadOnly(out / "trajectory.h5");
+  const auto c = f.readInt32("/snapshots/" + f.children("/snapshots").back() + "/compartments/species/C");
+  ASSERT_EQ(c.size(), 64u);
+  // The eight corner cubes lie wholly outside the sphere (their nearest point is 346 nm
+  // from the centre, beyond the radius 300 nm).
+  for (int i : {0, 3})
+    for (int j : {0, 3})
+      for (int k : {0, 3}) EXPECT_EQ(c[(i * 4 + j) * 4 + k], 0) << "corner " << i << j << k;
+  EXPECT_GT(sum(c), 50);
+}
+
 }  // namespace
 }  // namespace cortex::cli_test
