@@ -2,20 +2,7 @@
 
 #include <cmath>
 
-#include "membrane/membrane.hpp"
-
 namespace cortex {
-
-CurvatureAndDerivative meanCurvature(const Vec3& ga, const Vec3& gv, CurvatureEstimator estimator) {
-  if (estimator == CurvatureEstimator::kSigned) {
-    const double d = 2.0 * gv.squaredNorm();
-    const double h = ga.dot(gv) / d;
-    return {h, gv / d, (ga - 4.0 * h * gv) / d};
-  }
-  const double na = ga.norm(), nv = gv.norm();
-  const double h = na / (2.0 * nv);
-  return {h, ga / (2.0 * na * nv), -h * gv / (nv * nv)};
-}
 
 std::vector<double> vertexMeanCurvature(const MeshGeometry& g, const MeshTopology& topo,
                                         CurvatureEstimator estimator) {

@@ -12,7 +12,7 @@
 
 namespace cortex {
 
-enum class CurvatureEstimator;
+enum class CurvatureEstimator { kSigned, kUnsigned };
 
 struct CurvatureAndDerivative {
   double H;
@@ -21,8 +21,17 @@ struct CurvatureAndDerivative {
   Vec3 alpha, beta;
 };
 
-CurvatureAndDerivative meanCurvature(const Vec3& area_gradient, const Vec3& volume_gradient,
-                                     CurvatureEstimator estimator);
+// Inline: called once per vertex per force evaluation in the bending loop.
+inline CurvatureAndDerivative meanCurvature(const Vec3& ga, const Vec3& gv, CurvatureEstimator estimator) {
+  if (estimator == CurvatureEstimator::kSigned) {
+    const double d = 2.0 * gv.squaredNorm();
+    const double h = ga.dot(gv) / d;
+    return {h, gv / d, (ga - 4.0 * h * gv) / d};
+  }
+  const double na = ga.norm(), nv = gv.norm();
+  const double h = na / (2.0 * nv);
+  return {h, ga / (2.0 * na * nv), -h * gv / (nv * nv)};
+}
 
 // Mean curvature of every vertex for output: the estimator's value with the sign of
 // <gA, gV> (so the unsigned estimator still tells concave from convex); zero on

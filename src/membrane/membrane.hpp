@@ -8,6 +8,7 @@
 
 #include "core/schedule.hpp"
 #include "mech/energy_term.hpp"
+#include "membrane/curvature.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/mesh_topology.hpp"
 #include "mesh/remesh.hpp"
@@ -15,7 +16,6 @@
 
 namespace cortex {
 
-enum class CurvatureEstimator { kSigned, kUnsigned };
 enum class AreaModel { kGlobal, kPerVertex, kNone };
 
 // Mechanical parameters as the user gave them; unset schedules take the defaults below.
