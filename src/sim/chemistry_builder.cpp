@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
 #include "core/random.hpp"
 
 namespace cortex {
@@ -21,7 +24,11 @@ std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed
       double sum = 0.0;
       for (Index c = 0; c < compartments; ++c) cumulative[c] = sum += volume_weights[s][c];
       if (!(sum > 0.0) && config.initial_copies[s] > 0)
-        throw std::invalid_argument("initial copies: species " + config.model.species[s].name + " has no volume");
+        throw InputError(fmt::format(
+            "[[species]] \"{}\": {} \"{}\" has no volume inside the compartment grid (does the membrane "
+            "lie outside the box [0, shape*size]?), so its {} copies have nowhere to go",
+            config.model.species[s].name, config.sides[s].outside ? "outside" : "inside",
+            config.sides[s].membrane, config.initial_copies[s]));
     }
     // One uniform number per copy either way, so unconfined species draw as before.
     for (std::int64_t n = 0; n < config.initial_copies[s]; ++n) {

@@ -48,8 +48,16 @@ void confineChemistry(System& system) {
   const std::size_t species = sides.size();
   for (const ReactionRestriction& r : system.reactionRestrictions()) sides.push_back(r.side);
   const auto fractions = speciesFractions(system, sides, grid);
-  for (std::size_t s = 0; s < species; ++s)
-    if (fractions[s]) engine->setConfinement(static_cast<Index>(s), fractions[s]->volume, fractions[s]->faces);
+  for (std::size_t s = 0; s < species; ++s) {
+    if (!fractions[s]) continue;
+    try {
+      engine->setConfinement(static_cast<Index>(s), fractions[s]->volume, fractions[s]->faces);
+    } catch (const std::runtime_error& e) {
+      // The membrane moved so that a confined species with copies has no volume left.
+      throw RunError(fmt::format("t = {:.6g} s: species \"{}\" lost all its volume inside the compartment grid: {}",
+                                 system.time(), system.chemistryModel().species[s].name, e.what()));
+    }
+  }
   // A restricted reaction fires at the rate of the part of each compartment it may use:
   // none outside its box, and the volume fraction on its side of a membrane (reactants
   // spread uniformly over the compartment, so that fraction of them is there).
