@@ -70,6 +70,10 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
     if (m.mesh_size > extent)
       r.fail("mesh_size", fmt::format("({:g} nm) must not exceed the membrane's smallest "
                                       "radius or side ({:g} nm)", m.mesh_size, extent));
+  } else {
+    // A loaded mesh keeps its own triangles; mesh_size only sets the remesher's target
+    // on flat parts (default: the file's mean edge length).
+    m.mesh_size = r.number("mesh_size", 0.0, Range::positive(), "nm");
   }
 }
 
@@ -123,9 +127,9 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
   m.max_size = r.number("max_size", m.mesh_size * 2.0, Range::positive(), "nm");
   m.remesh_tolerance = r.number("remesh_tolerance", m.mesh_size / 120.0, Range::positive(), "nm");
-  if (m.shape != "mesh" && m.min_size > m.mesh_size)
+  if (m.mesh_size > 0 && m.min_size > m.mesh_size)
     r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
-  if (m.shape != "mesh" && m.max_size < m.mesh_size)
+  if (m.mesh_size > 0 && m.max_size < m.mesh_size)
     r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
   if (r.has("species")) r.fail("species", "membrane species are not supported yet in this version");
   r.finish();
