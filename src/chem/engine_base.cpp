@@ -54,6 +54,11 @@ void EngineBase::checkCopies(Index compartment, Index species, int n) const {
                                 " has no volume on species " + std::to_string(species) + "'s side of its membrane");
 }
 
+void EngineBase::growthOverflow(Index compartment, Index species) const {
+  throw RunError("chemistry: copies of species " + std::to_string(species) + " in compartment " +
+                 std::to_string(compartment) + " would exceed 2^31 - 1 (a reaction network growing without bound?)");
+}
+
 void EngineBase::checkRateFactor(Index reaction, Index compartment, double factor) const {
   if (reaction < 0 || reaction >= R_ || compartment < 0 || compartment >= C_)
     throw std::out_of_range("chemistry engine: no reaction " + std::to_string(reaction) + " in compartment " +

@@ -2,6 +2,8 @@
 // copies, and the clock, stream and counters that make up a checkpoint.
 #pragma once
 
+#include <limits>
+
 #include "chem/chemistry_engine.hpp"
 #include "chem/grid_faces.hpp"
 #include "chem/reaction_network.hpp"
@@ -34,6 +36,12 @@ class EngineBase : public ChemistryEngine {
   // std::invalid_argument.
   void checkCopies(Index compartment, Index species, int n) const;
   void checkRateFactor(Index reaction, Index compartment, double factor) const;
+  // Copy numbers are 32-bit: a reaction that would push one past 2^31 - 1 stops the run
+  // (RunError) instead of wrapping around.
+  void checkGrowth(int n, int delta, Index compartment, Index species) const {
+    if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(compartment, species);
+  }
+  [[noreturn]] void growthOverflow(Index compartment, Index species) const;
 
   // Recomputes every propensity of compartment c from copies_ and the rates.
   virtual void refreshCompartment(Index c) = 0;

@@ -134,6 +134,7 @@ void NextSubvolumeEngine::react(Index c, Index r) {
   Subvolume& v = sub_[c];
   int* n = &copies_[static_cast<std::size_t>(c) * S_];
   for (const SpeciesChange& change : net_.changes[r]) {
+    checkGrowth(n[change.species], change.delta, c, change.species);
     n[change.species] += change.delta;
     v.diffusion += change.delta * hopOutOf(c, change.species);
   }

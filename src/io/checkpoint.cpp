@@ -81,6 +81,10 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
       f.write(g + "/vertex_area0", m->material().vertex_area0);
       f.setAttribute(g, "initial_area", m->material().initial_area);
       f.setAttribute(g, "initial_volume", m->material().initial_volume);
+      if (const auto& rs = m->remeshing()) {
+        const SizingParameters& z = rs->sizing;
+        f.write(g + "/remesh_sizing", std::vector<double>{z.flat_size, z.min_size, z.max_size, z.tolerance});
+      }
       const RemeshStats& r = m->remeshTotals();
       f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
     }
@@ -124,6 +128,15 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
     s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
     s.material.initial_area = f.attributeDouble(g, "initial_area");
     s.material.initial_volume = f.attributeDouble(g, "initial_volume");
+    if (f.exists(g + "/remesh_sizing")) {
+      const std::vector<double> z = f.readDoubles(g + "/remesh_sizing");
+      if (z.size() != 4) throw InputError(fmt::format("{}: {}/remesh_sizing is malformed", file.string(), g));
+      RemeshSettings rs;
+      rs.sizing.flat_size = z[0], rs.sizing.min_size = z[1], rs.sizing.max_size = z[2], rs.sizing.tolerance = z[3];
+      s.remeshing = rs;
+    }
+    if (s.fixed.size() != s.mesh.positions.size() || s.material.vertex_area0.size() != s.mesh.positions.size())
+      throw InputError(fmt::format("{}: {}: per-vertex arrays do not match the vertex count", file.string(), g));
     const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");
     if (r.size() != 5) throw InputError(fmt::format("{}: {}/remesh_totals is malformed", file.string(), g));
     s.remesh_totals = {r[1], r[2], r[3],

@@ -11,7 +11,8 @@ namespace {
 
 CompartmentGrid readGrid(const ConfigReader& r) {
   CompartmentGrid g;
-  g.size = r.number("size", g.size, Range::positive(), "nm");
+  // From 1 nm to 1 cm: beyond, hop rates D/h^2 or volumes overflow into inf or 0.
+  g.size = r.number("size", g.size, Range{1.0, 1e7}, "nm");
   if (r.has("shape")) {
     const auto s = r.numbers("shape", 3, Range{1.0, 1e6}, "compartments");
     for (int k = 0; k < 3; ++k) {
@@ -58,8 +59,9 @@ SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const st
   if (by_copies) s.copies = r.integer("copies", 0, 0, 2'000'000'000);
   if (by_concentration) {
     const double c = r.requiredNumber("concentration", Range::nonNegative(), "µM");
-    s.copies = std::llround(c * kCopiesPerMicromolarFemtoliter * box_volume_nm3 * 1e-9);
-    if (s.copies > 2'000'000'000) r.fail("concentration", "gives more than 2e9 copies in the box");
+    const double copies = c * kCopiesPerMicromolarFemtoliter * box_volume_nm3 * 1e-9;
+    if (!(copies <= 2e9)) r.fail("concentration", fmt::format("gives {:.3g} copies in the box, more than 2e9", copies));
+    s.copies = std::llround(copies);
   }
   r.finish();
   return s;

@@ -127,6 +127,8 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
   m.max_size = r.number("max_size", m.mesh_size * 2.0, Range::positive(), "nm");
   m.remesh_tolerance = r.number("remesh_tolerance", m.mesh_size / 120.0, Range::positive(), "nm");
+  if (r.has("min_size") && r.has("max_size") && m.min_size > m.max_size)
+    r.fail("min_size", fmt::format("({:g} nm) exceeds max_size ({:g} nm)", m.min_size, m.max_size));
   if (m.mesh_size > 0 && m.min_size > m.mesh_size)
     r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
   if (m.mesh_size > 0 && m.max_size < m.mesh_size)

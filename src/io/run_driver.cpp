@@ -78,6 +78,25 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
   return system;
 }
 
+// A resumed run continues the stored one: overrides may extend or change physics, but not
+// what the stored state was built on (its windows, grid, random streams).
+void checkResumable(const Config& stored, const Config& now, double checkpoint_time) {
+  auto refuse = [](const std::string& key, const std::string& why) {
+    throw InputError(fmt::format("--resume: {} cannot change when resuming: {}", key, why));
+  };
+  if (now.simulation.chemistry_window != stored.simulation.chemistry_window)
+    refuse("simulation.chemistry_window", "window times are counted from the start of the run");
+  if (now.simulation.seed != stored.simulation.seed) refuse("simulation.seed", "the random streams continue");
+  if (now.simulation.end_time < checkpoint_time)
+    refuse("simulation.end_time", fmt::format("the checkpoint is at t = {:g} s already", checkpoint_time));
+  if (now.chemistry.has_value() != stored.chemistry.has_value()) refuse("[[species]]", "the chemistry state is stored");
+  if (now.chemistry) {
+    const CompartmentGrid &a = now.chemistry->model.grid, &b = stored.chemistry->model.grid;
+    if (a.size != b.size || a.shape != b.shape) refuse("[compartments]", "copies are stored per compartment");
+    if (now.chemistry->engine != stored.chemistry->engine) refuse("chemistry.engine", "engines keep different state");
+  }
+}
+
 void logThroughput(const System& system, double wall) {
   const RunCounters& c = system.counters;
   const std::int64_t evals = system.forceField().forceEvaluations();
@@ -115,6 +134,8 @@ void runSimulation(const RunRequest& request) {
     checkpoint = readCheckpoint(outdir / "checkpoint.h5");
     header = checkpoint->header;
     config = parseConfig(header.config_toml, header.config_source, header.base_dir, overrides);
+    checkResumable(parseConfig(header.config_toml, header.config_source, header.base_dir, {}), config,
+                   checkpoint->time);
   } else {
     config = loadConfig(request.config, overrides);
     outdir = request.output_dir.empty() ? std::filesystem::path(request.config.stem().string() + "_out")

@@ -30,13 +30,19 @@ double meanEdgeLength(const SurfaceMesh& m) {
 }
 
 // A loaded mesh has no mesh_size: its own mean edge length stands in for it.
-RemeshSettings remeshSettings(const MembraneConfig& c, const SurfaceMesh& mesh) {
+RemeshSettings remeshSettings(const MembraneConfig& c, const SurfaceMesh& mesh, const std::string& where) {
   RemeshSettings r;
   SizingParameters& s = r.sizing;
   s.flat_size = c.mesh_size > 0 ? c.mesh_size : meanEdgeLength(mesh);
   s.min_size = c.min_size > 0 ? c.min_size : s.flat_size / 4.0;
   s.max_size = c.max_size > 0 ? c.max_size : 2.0 * s.flat_size;
   s.tolerance = c.remesh_tolerance > 0 ? c.remesh_tolerance : s.flat_size / 120.0;
+  if (s.min_size > s.max_size)
+    throw InputError(fmt::format("{}: min_size ({:g} nm) exceeds max_size ({:g} nm)", where, s.min_size, s.max_size));
+  if (s.max_size < s.flat_size / 4.0)
+    throw InputError(fmt::format("{}: max_size ({:g} nm) is under a quarter of the mesh size ({:g} nm): remeshing "
+                                 "would multiply the vertices more than sixteen-fold",
+                                 where, s.max_size, s.flat_size));
   return r;
 }
 
@@ -78,7 +84,9 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     membrane->setMaterial(restored->material);
     membrane->setRemeshTotals(restored->remesh_totals);
   }
-  if (c.remesh) membrane->setRemeshing(remeshSettings(c, membrane->mesh()));
+  if (c.remesh)
+    membrane->setRemeshing(restored && restored->remeshing ? *restored->remeshing
+                                                           : remeshSettings(c, membrane->mesh(), where));
   membrane->setTime(0.0);
   return membrane;
 }

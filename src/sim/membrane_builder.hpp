@@ -16,6 +16,9 @@ struct MembraneState {
   std::vector<char> fixed;
   MembraneMaterial material;
   RemeshStats remesh_totals;
+  // The remesher's settings as resolved at the start (a loaded mesh's defaults come from
+  // its original edge lengths, which remeshing changes).
+  std::optional<RemeshSettings> remeshing;
 };
 
 std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& config, const std::string& source,

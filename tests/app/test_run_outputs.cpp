@@ -13,6 +13,8 @@
 
 #include "app/cli_helpers.hpp"
 #include "io/hdf5_file.hpp"
+#include "mesh/icosphere.hpp"
+#include "mesh/mesh_file.hpp"
 
 namespace cortex::cli_test {
 namespace {
@@ -314,6 +316,41 @@ TEST(Resume, ContinuesBitIdenticallyWithRemeshing) {
   const nlohmann::json remesh = readJson(dir / "out" / "summary.json")["membranes"][0]["remesh"];
   EXPECT_GT(remesh["splits"].get<long>() + remesh["collapses"].get<long>() + remesh["flips"].get<long>(), 0)
       << "remeshing must actually edit the mesh for the resume test to mean anything";
+}
+
+// A loaded mesh takes its remeshing defaults from its own edge lengths; the checkpoint
+// keeps them as resolved at the start, since remeshing changes those lengths.
+TEST(Resume, LoadedMeshWithRemeshingContinuesBitIdentically) {
+  TempDir dir;
+  writeObj(dir / "ico.obj", icosphere(Vec3(0, 0, 0), 200.0, 3));
+  auto config = [](double end_time) {
+    return fmt::format(R"([simulation]
+end_time = {}
+chemistry_window = 0.02
+snapshot_interval = 0.04
+
+[mechanics]
+minimizer = "lbfgs"
+force_tolerance = 0.5
+
+[[membrane]]
+name = "vesicle"
+shape = "mesh"
+file = "ico.obj"
+remesh = true
+volume_modulus = 0.8
+mesh_regularization = 0.3
+reduced_volume = [[0.0, 0.98], [0.1, 0.9]]
+)",
+                       end_time);
+  };
+  RunResult r = runConfig(writeConfig(dir.path(), config(0.1), "full.toml"), dir / "A", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runConfig(writeConfig(dir.path(), config(0.04), "half.toml"), dir / "B", {}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runCortex({"run", "--resume", (dir / "B").string(), "--set", "simulation.end_time=0.1", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
 }
 
 // A membrane with no area elasticity under a tension that turns negative at t = 0.11 s:
