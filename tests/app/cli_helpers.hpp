@@ -13,12 +13,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "io/hdf5_file.hpp"
 
 namespace cortex::cli_test {
 
@@ -174,6 +177,36 @@ inline RunResult runConfig(const fs::path& config, const fs::path& outdir, const
   std::vector<std::string> args{"run", config.string(), "-o", outdir.string(), "-q"};
   args.insert(args.end(), extra.begin(), extra.end());
   return runCortex(args, capture, env);
+}
+
+// The same run done twice: at once to `end` (dir/A), and to `half` then resumed with
+// `--set simulation.end_time=end` (dir/B). `config(t)` gives the config text for end time
+// t; `extra` arguments go to all three invocations. Fails the test on a non-zero exit or
+// when the half run did not stop at `half`.
+inline void runWholeAndResumed(const TempDir& dir, const std::function<std::string(double)>& config, double half,
+                               double end, const std::vector<std::string>& extra = {}) {
+  RunResult r = runConfig(writeConfig(dir.path(), config(end), "full.toml"), dir / "A", extra, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  r = runConfig(writeConfig(dir.path(), config(half), "half.toml"), dir / "B", extra, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_DOUBLE_EQ(readJson(dir / "B" / "summary.json")["time"].get<double>(), half);
+  std::vector<std::string> resume{"run", "--resume", (dir / "B").string(), "--set",
+                                  "simulation.end_time=" + std::to_string(end), "-q"};
+  resume.insert(resume.end(), extra.begin(), extra.end());
+  r = runCortex(resume, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+}
+
+// Every snapshot of two trajectories holds the same per-compartment copies of `species`.
+inline void expectSameCompartmentCounts(const fs::path& a_h5, const fs::path& b_h5,
+                                        const std::vector<std::string>& species) {
+  const h5::File a = h5::File::openReadOnly(a_h5), b = h5::File::openReadOnly(b_h5);
+  ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
+  for (const std::string& s : a.children("/snapshots"))
+    for (const std::string& name : species) {
+      const std::string path = "/snapshots/" + s + "/compartments/species/" + name;
+      EXPECT_EQ(a.readInt32(path), b.readInt32(path)) << path;
+    }
 }
 
 }  // namespace cortex::cli_test

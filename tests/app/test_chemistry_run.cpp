@@ -96,21 +96,10 @@ TEST(ChemistryRun, WritesCompartmentCountsAndConservesCopies) {
 
 TEST(ChemistryRun, ResumesBitIdentically) {
   TempDir dir;
-  RunResult r = runConfig(writeConfig(dir.path(), chemistryConfig(0.2), "full.toml"), dir / "A", {}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  r = runConfig(writeConfig(dir.path(), chemistryConfig(0.1), "half.toml"), dir / "B", {}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  r = runCortex({"run", "--resume", (dir / "B").string(), "--set", "simulation.end_time=0.2", "-q"}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  runWholeAndResumed(dir, chemistryConfig, 0.1, 0.2);
+  if (::testing::Test::HasFatalFailure()) return;
   EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
-  const h5::File a = h5::File::openReadOnly(dir / "A" / "trajectory.h5");
-  const h5::File b = h5::File::openReadOnly(dir / "B" / "trajectory.h5");
-  ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
-  for (const std::string& s : a.children("/snapshots"))
-    for (const char* species : {"A", "B", "C"}) {
-      const std::string path = "/snapshots/" + s + "/compartments/species/" + species;
-      EXPECT_EQ(a.readInt32(path), b.readInt32(path)) << path;
-    }
+  expectSameCompartmentCounts(dir / "A" / "trajectory.h5", dir / "B" / "trajectory.h5", {"A", "B", "C"});
 }
 
 TEST(ChemistryRun, BadReactionNamesTheKey) {

@@ -267,16 +267,9 @@ TEST(Reproducibility, ThreadCountDoesNotChangeResults) {
 void expectResumeIsBitIdentical(const std::string& membrane_extra) {
   TempDir dir;
   const fs::path a = dir / "A", b = dir / "B";
-  const fs::path config_a = writeConfig(dir.path(), vesicleConfig(0.2, 200.0, membrane_extra), "full.toml");
-  const fs::path config_b = writeConfig(dir.path(), vesicleConfig(0.1, 200.0, membrane_extra), "half.toml");
-  RunResult r = runConfig(config_a, a, {"--threads", "1"}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  r = runConfig(config_b, b, {"--threads", "1"}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  EXPECT_DOUBLE_EQ(readJson(b / "summary.json")["time"].get<double>(), 0.1);
-  r = runCortex({"run", "--resume", b.string(), "--set", "simulation.end_time=0.2", "-q", "--threads", "1"},
-                dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  runWholeAndResumed(
+      dir, [&](double end) { return vesicleConfig(end, 200.0, membrane_extra); }, 0.1, 0.2, {"--threads", "1"});
+  if (::testing::Test::HasFatalFailure()) return;
 
   EXPECT_EQ(comparableSummary(a), comparableSummary(b));
   const auto sa = readSnapshots(a / "trajectory.h5"), sb = readSnapshots(b / "trajectory.h5");
@@ -297,7 +290,7 @@ void expectResumeIsBitIdentical(const std::string& membrane_extra) {
   EXPECT_DOUBLE_EQ(cp.attributeDouble("/run", "time"), 0.2);
 
   // Resuming a finished run changes nothing.
-  r = runCortex({"run", "--resume", a.string(), "-q"}, dir.path());
+  const RunResult r = runCortex({"run", "--resume", a.string(), "-q"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   EXPECT_EQ(comparableSummary(a), comparableSummary(b));
   EXPECT_EQ(readSnapshots(a / "trajectory.h5").size(), sa.size());
@@ -344,12 +337,8 @@ reduced_volume = [[0.0, 0.98], [0.1, 0.9]]
 )",
                        end_time);
   };
-  RunResult r = runConfig(writeConfig(dir.path(), config(0.1), "full.toml"), dir / "A", {}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  r = runConfig(writeConfig(dir.path(), config(0.04), "half.toml"), dir / "B", {}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
-  r = runCortex({"run", "--resume", (dir / "B").string(), "--set", "simulation.end_time=0.1", "-q"}, dir.path());
-  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  runWholeAndResumed(dir, config, 0.04, 0.1);
+  if (::testing::Test::HasFatalFailure()) return;
   EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
 }
 
