@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "chem/chemistry_model.hpp"
+#include "chem/reaction_hook.hpp"
 #include "core/random.hpp"
 
 namespace cortex {
@@ -57,6 +58,10 @@ class ChemistryEngine {
   // rates changed are recomputed. Unconfined species (the default) behave as f = a = 1.
   virtual void setConfinement(Index species, const std::vector<double>& volume,
                               const std::vector<std::array<double, 6>>& faces) = 0;
+
+  // Who carries out hooked reactions (not owned; must outlive the engine's advances).
+  // A model with hooked reactions and no hook fires them as plain mass action.
+  virtual void setReactionHook(ReactionHook* hook) = 0;
 
   virtual std::int64_t events() const = 0;
   // Events fired per reaction (index as in the model); diffusion hops counted apart.

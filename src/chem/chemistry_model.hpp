@@ -55,6 +55,9 @@ struct ReactionDef {
   std::string equation;
   std::vector<Stoichiometry> reactants, products;
   double rate = 0.0;
+  // Carried out by the engine's ReactionHook (filament reactions); such reactions are
+  // built by the program, never parsed from a config.
+  bool hooked = false;
   int order() const;
 };
 

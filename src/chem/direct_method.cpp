@@ -76,6 +76,7 @@ void DirectMethodEngine::fire(std::size_t channel) {
   const std::size_t reaction_channels = static_cast<std::size_t>(C_) * R_;
   if (channel < reaction_channels) {
     const Index c = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
+    if (!hookAccepts(r, c)) return;  // void event (thinning): nothing changes
     for (const SpeciesChange& change : net_.changes[r]) {
       int& n = copies_[static_cast<std::size_t>(c) * S_ + change.species];
       checkGrowth(n, change.delta, c, change.species);

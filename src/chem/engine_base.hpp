@@ -18,6 +18,7 @@ class EngineBase : public ChemistryEngine {
   const std::vector<std::int64_t>& reactionEvents() const override { return reaction_events_; }
   std::int64_t diffusionEvents() const override { return diffusion_events_; }
   const RandomStream& random() const override { return rng_; }
+  void setReactionHook(ReactionHook* hook) override { hook_ = hook; }
   void restore(const RandomStream& stream, double time, std::int64_t events,
                const std::vector<std::int64_t>& reaction_events, std::int64_t diffusion_events) override;
   // Stores the confinement, relocates stranded copies, then lets the engine recompute
@@ -46,6 +47,9 @@ class EngineBase : public ChemistryEngine {
   // Recomputes every propensity of compartment c from copies_ and the rates.
   virtual void refreshCompartment(Index c) = 0;
 
+  // Lets the hook carry out reaction r in c if it is hooked; false: the event is void.
+  bool hookAccepts(Index r, Index c) { return !hook_ || !net_.hooked[r] || hook_->fired(r, c, *this, rng_); }
+
   bool confined(Index species) const { return confined_[species] != 0; }
   // Per-copy hop rate of a confined species out of c, in total and through face f.
   double hopOut(Index c, Index s) const { return hop_out_[static_cast<std::size_t>(c) * S_ + s]; }
@@ -70,6 +74,7 @@ class EngineBase : public ChemistryEngine {
   std::int64_t events_ = 0;
   std::vector<std::int64_t> reaction_events_;
   std::int64_t diffusion_events_ = 0;
+  ReactionHook* hook_ = nullptr;
 
  private:
   // Moves copies of s out of inactive compartments; returns the compartments touched.

@@ -60,15 +60,34 @@ void NextSubvolumeEngine::changeCopies(Index c, Index s, int delta) {
   for (Index r : net_.dependents[s]) setPropensity(c, r);
 }
 
+template <class Change>
+void NextSubvolumeEngine::changeSubvolume(Index c, Change&& change) {
+  if (!advancing_ || c == firing_) {
+    change();
+    return;
+  }
+  const double a_old = total(sub_[c]);
+  const double t_old = heap_.time(c);
+  change();
+  const double a_new = total(sub_[c]);
+  double t_new = kNever;
+  if (a_new > 0.0)
+    t_new = a_old > 0.0 && t_old < kNever ? now_ + a_old / a_new * (t_old - now_) : now_ + rng_.exponential(a_new);
+  heap_.update(c, t_new);
+}
+
 void NextSubvolumeEngine::setCopies(Index compartment, Index species, int n) {
   checkCopies(compartment, species, n);
-  changeCopies(compartment, species, n - copies_[slot(compartment, species)]);
+  changeSubvolume(compartment,
+                  [&] { changeCopies(compartment, species, n - copies_[slot(compartment, species)]); });
 }
 
 void NextSubvolumeEngine::setRateFactor(Index reaction, Index compartment, double factor) {
   checkRateFactor(reaction, compartment, factor);
-  rate_[static_cast<std::size_t>(compartment) * R_ + reaction] = factor * net_.kernels[reaction].constant;
-  setPropensity(compartment, reaction);
+  changeSubvolume(compartment, [&] {
+    rate_[static_cast<std::size_t>(compartment) * R_ + reaction] = factor * net_.kernels[reaction].constant;
+    setPropensity(compartment, reaction);
+  });
 }
 
 void NextSubvolumeEngine::advance(double t_end) {
@@ -82,7 +101,9 @@ void NextSubvolumeEngine::advance(double t_end) {
     first_times_[c] = a > 0.0 ? time_ + rng_.exponential(a) : kNever;
   }
   heap_.assign(first_times_);
+  advancing_ = true;
   while (heap_.topTime() <= t_end) fire(heap_.topId(), heap_.topTime());
+  advancing_ = false;
   time_ = t_end;
 }
 
@@ -90,23 +111,29 @@ void NextSubvolumeEngine::fire(Index c, double t) {
   const Subvolume& v = sub_[c];
   const double reactions = std::max(v.reactions, 0.0);
   const double x = rng_.uniform() * (reactions + std::max(v.diffusion, 0.0));
+  firing_ = c;
+  now_ = t;
+  Index r = -1;
   bool fired = false;
   if (x < reactions) {
-    const Index r = pickReaction(c, x);
-    if (r >= 0) {
+    r = pickReaction(c, x);
+    // A hooked reaction its hook refuses is a void event (thinning): nothing changes.
+    if (r >= 0 && hookAccepts(r, c)) {
       react(c, r);
       ++reaction_events_[r];
       fired = true;
     }
   } else {
-    fired = hop(c, x - reactions, t);
+    fired = hop(c, x - reactions);
     if (fired) ++diffusion_events_;
   }
-  // A miss means rounding in the incremental sums put x past the last channel: the
-  // rebuilt sums are smaller, and dropping the event is exact thinning of the excess.
+  firing_ = -1;
+  // A miss (no channel picked) means rounding in the incremental sums put x past the last
+  // channel: the rebuilt sums are smaller, and dropping the event is exact thinning of
+  // the excess.
   if (fired)
     ++events_;
-  else
+  else if (x >= reactions || r < 0)
     refresh(c);
   reschedule(c, t);
 }
@@ -143,7 +170,7 @@ void NextSubvolumeEngine::react(Index c, Index r) {
 
 // x in [0, diffusion of c) picks the species by its share and, with what is left of it,
 // the face: one uniform number serves both choices.
-bool NextSubvolumeEngine::hop(Index c, double x, double t) {
+bool NextSubvolumeEngine::hop(Index c, double x) {
   const int faces = sub_[c].faces;
   const int* n = &copies_[static_cast<std::size_t>(c) * S_];
   Index s = -1;
@@ -176,16 +203,7 @@ bool NextSubvolumeEngine::hop(Index c, double x, double t) {
   }
 
   changeCopies(c, s, -1);
-  // Gibson-Bruck: the destination did not fire, so its pending time is rescaled to the
-  // new propensity instead of drawing a new random number.
-  const double a_old = total(sub_[dest]);
-  const double t_old = heap_.time(dest);
-  changeCopies(dest, s, +1);
-  const double a_new = total(sub_[dest]);
-  double t_new = kNever;
-  if (a_new > 0.0)
-    t_new = a_old > 0.0 && t_old < kNever ? t + a_old / a_new * (t_old - t) : t + rng_.exponential(a_new);
-  heap_.update(dest, t_new);
+  changeSubvolume(dest, [&] { changeCopies(dest, s, +1); });
   return true;
 }
 

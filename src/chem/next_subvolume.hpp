@@ -50,14 +50,22 @@ class NextSubvolumeEngine final : public EngineBase {
   void fire(Index c, double t);
   Index pickReaction(Index c, double x) const;
   void react(Index c, Index r);
-  bool hop(Index c, double x, double t);
+  bool hop(Index c, double x);
   void reschedule(Index c, double t);
+  // Applies `change` to compartment c's propensities; during an advance, a compartment
+  // other than the one firing keeps its pending time, rescaled to the new propensity
+  // (Gibson & Bruck 2000) instead of drawing a new random number.
+  template <class Change>
+  void changeSubvolume(Index c, Change&& change);
 
   Index blocks_;                    // reaction blocks per compartment
   std::vector<double> rate_;        // [c * R + r]: rate factor * stochastic rate constant
   std::vector<double> propensity_;  // [c * R + r]
   std::vector<double> block_sum_;   // [c * blocks_ + b]
   std::vector<Subvolume> sub_;
+  bool advancing_ = false;
+  Index firing_ = -1;   // compartment being fired, during an advance
+  double now_ = 0.0;    // its event time
   std::vector<double> first_times_;  // scratch for the heap rebuilt at each advance
   EventQueue heap_;
 };

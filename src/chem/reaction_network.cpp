@@ -88,6 +88,7 @@ ReactionNetwork::ReactionNetwork(const ChemistryModel& model) {
   for (Index r = 0; r < numReactions; ++r) {
     const ReactionDef& def = model.reactions[r];
     kernels.push_back(kernelFor(def, model.grid.volume(), numSpecies));
+    hooked.push_back(def.hooked ? 1 : 0);
     for (const auto& [s, delta] : netChanges(def))
       if (delta != 0) changes.values.push_back({s, delta});
     changes.endRow();

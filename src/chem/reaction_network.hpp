@@ -62,6 +62,7 @@ struct ReactionNetwork {
   Rows<SpeciesChange> changes;   // per reaction: net changes, species with delta 0 omitted
   Rows<Index> affected;          // per reaction: reactions whose propensity it changes
   Rows<Index> dependents;        // per species: reactions whose propensity reads it
+  std::vector<char> hooked;      // per reaction: carried out by a ReactionHook
   std::vector<double> hopRate;   // per species: D/h^2, per copy and per face
   std::vector<Index> diffusing;  // species with hopRate > 0, ascending
 };

@@ -16,6 +16,7 @@ namespace cortex {
 enum class StreamId : std::uint64_t {
   kChemistry = 1,
   kInitialConditions = 2,
+  kFilamentPlacement = 3,
 };
 
 class RandomStream {

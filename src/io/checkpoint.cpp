@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "io/filament_checkpoint.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace cortex {
@@ -89,6 +90,7 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
       f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
     }
     if (const ChemistryEngine* chem = system.chemistry()) writeChemistry(f, *chem, system.chemistryModel());
+    if (const FilamentNetwork* net = system.filaments()) writeFilamentState(f, *net);
     f.flush();
   }
   std::filesystem::rename(tmp, file);
@@ -144,6 +146,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
     cp.membranes.emplace(name, std::move(s));
   }
   if (f.exists("/chemistry")) cp.chemistry = readChemistry(f);
+  if (f.exists("/filaments")) cp.filaments = readFilamentState(f, file.string());
   return cp;
 }
 

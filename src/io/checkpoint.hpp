@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "sim/filament_builder.hpp"
 #include "sim/membrane_builder.hpp"
 #include "sim/system.hpp"
 
@@ -37,6 +38,7 @@ struct Checkpoint {
   std::int64_t force_evaluations = 0, energy_evaluations = 0;
   std::map<std::string, MembraneState> membranes;
   std::optional<ChemistryState> chemistry;
+  std::optional<FilamentState> filaments;
 };
 
 // Writes atomically (a temporary file renamed over the old one), so a crash never

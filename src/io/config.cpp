@@ -9,13 +9,10 @@
 #include "io/chemistry_config.hpp"
 #include "io/config_override.hpp"
 #include "io/config_reader.hpp"
+#include "io/filament_config.hpp"
 
 namespace cortex {
 namespace {
-
-// Sections of the contract whose physics is not implemented yet: a clear error beats
-// silently ignoring them.
-const char* const kNotYetSupported[] = {"filament_type", "filaments", "boundary"};
 
 SimulationConfig readSimulation(const ConfigReader& r) {
   SimulationConfig s;
@@ -157,8 +154,6 @@ Config parseConfig(const std::string& text, const std::string& source,
   c.effective_toml = effective.str();
 
   const ConfigReader r(root, source, "");
-  for (const char* k : kNotYetSupported)
-    if (r.has(k)) r.fail(k, "is not supported yet in this version of cortex (no filaments yet)");
   if (auto s = r.table("simulation")) c.simulation = readSimulation(*s);
   if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
   const auto membranes = r.tableArray("membrane");
@@ -169,8 +164,10 @@ Config parseConfig(const std::string& text, const std::string& source,
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
   }
   c.chemistry = readChemistry(r, c.membranes);
-  if (c.membranes.empty() && !c.chemistry)
-    throw InputError(fmt::format("{}: no [[membrane]] and no [[species]] given: nothing to simulate", source));
+  c.filaments = readFilaments(r, c.chemistry);
+  if (c.membranes.empty() && !c.chemistry && !c.filaments)
+    throw InputError(fmt::format("{}: no [[membrane]], [[species]] or [[filament_type]] given: nothing to simulate",
+                                 source));
   r.finish();
   return c;
 }

@@ -10,6 +10,7 @@
 
 #include "chem/chemistry_engine.hpp"
 #include "core/types.hpp"
+#include "filament/filament_params.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
 
@@ -77,6 +78,7 @@ struct Config {
   MinimizerSettings mechanics;
   std::vector<MembraneConfig> membranes;
   std::optional<ChemistryConfig> chemistry;  // present when [[species]] are given
+  std::optional<FilamentConfig> filaments;   // present when [[filament_type]] are given
 };
 
 }  // namespace cortex

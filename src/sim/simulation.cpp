@@ -83,20 +83,28 @@ void Simulation::advanceChemistry(double t_end) {
 }
 
 MinimizationResult Simulation::relax() {
-  if (system_.membranes().empty()) return {true, 0, 0.0, 0.0, "nothing to relax"};
-  const auto start = std::chrono::steady_clock::now();
-  Eigen::VectorXd x = system_.coordinates();
-  const MinimizationResult r = minimize(system_.forceField(), x, mech_);
-  system_.setCoordinates(x);
+  // Chemistry may have grown, bound or branched filaments since the last relaxation.
+  if (system_.filaments()) system_.layOut();
+  MinimizationResult r{true, 0, 0.0, 0.0, "nothing to relax"};
   RunCounters& c = system_.counters;
-  ++c.minimizations;
-  c.minimizer_iterations += r.iterations;
-  c.last_max_force = r.max_force;
-  c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (system_.hasMechanics()) {
+    const auto start = std::chrono::steady_clock::now();
+    Eigen::VectorXd x = system_.coordinates();
+    r = minimize(system_.forceField(), x, mech_);
+    system_.setCoordinates(x);
+    ++c.minimizations;
+    c.minimizer_iterations += r.iterations;
+    c.last_max_force = r.max_force;
+    c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   remeshMembranes();
   checkMeshes();
   // The membranes moved (and may have been remeshed): re-slice the grid for confined species.
   confineChemistry(system_);
+  // Filaments moved: loads, tensions and binding partners change the filament rates.
+  const auto feedback_start = std::chrono::steady_clock::now();
+  system_.updateMechanochemistry();
+  c.feedback_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feedback_start).count();
   if (!r.converged) {
     ++c.unconverged_minimizations;
     spdlog::warn("t = {:.6g} s: minimization stopped before convergence after {} iterations "

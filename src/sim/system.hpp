@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "chem/chemistry_engine.hpp"
+#include "filament/filament_chemistry.hpp"
+#include "filament/filament_network.hpp"
 #include "mech/force_field.hpp"
 #include "sim/run_config.hpp"
 #include "membrane/membrane.hpp"
@@ -21,6 +23,7 @@ struct RunCounters {
   double mechanics_seconds = 0.0;
   double remesh_seconds = 0.0;
   double chemistry_seconds = 0.0;
+  double feedback_seconds = 0.0;  // filament rates after each minimization (incl. binding-pair search)
 };
 
 class System {
@@ -44,13 +47,25 @@ class System {
   const ChemistryEngine* chemistry() const { return chemistry_.get(); }
   const ChemistryModel& chemistryModel() const { return chemistry_model_; }
 
+  // The cytoskeleton: adds the filament energy terms to the force field. Its chemistry
+  // (if any) is hooked into the engine by setFilamentChemistry.
+  void setFilaments(std::unique_ptr<FilamentNetwork> network);
+  void setFilamentChemistry(std::unique_ptr<FilamentChemistry> chemistry);
+  FilamentNetwork* filaments() { return filaments_.get(); }
+  const FilamentNetwork* filaments() const { return filaments_.get(); }
+  FilamentChemistry* filamentChemistry() { return filament_chemistry_.get(); }
+  const FilamentChemistry* filamentChemistry() const { return filament_chemistry_.get(); }
+  // After a minimization: force-dependent filament rates (mechanochemical feedback).
+  void updateMechanochemistry();
+
   std::vector<std::unique_ptr<Membrane>>& membranes() { return membranes_; }
   const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
   ForceField& forceField() { return force_field_; }
   const ForceField& forceField() const { return force_field_; }
 
-  // Recomputes coordinate offsets and the frozen mask after vertex counts changed
-  // (remeshing); the energy terms and the force field's counters stay.
+  // Recomputes coordinate offsets, the filament layout and the frozen mask after vertex or
+  // bead counts changed (remeshing, chemistry); the energy terms and the force field's
+  // counters stay.
   void layOut();
 
   // Evaluates every scheduled parameter at time t.
@@ -62,7 +77,9 @@ class System {
   // All coordinates as one vector (the minimizer's variables) and back into the meshes.
   Eigen::VectorXd coordinates() const;
   void setCoordinates(const Eigen::VectorXd& x);
-  Index numVertices() const;
+  Index numVertices() const;  // membrane vertices
+  Index numDegreesOfFreedom() const;  // 3 * (vertices + filament beads)
+  bool hasMechanics() const { return !membranes_.empty() || (filaments_ && !filaments_->filaments().empty()); }
 
  private:
   void buildForceField();
@@ -73,6 +90,8 @@ class System {
   std::unique_ptr<ChemistryEngine> chemistry_;
   std::vector<SpeciesSide> species_sides_;
   std::vector<ReactionRestriction> reaction_restrictions_;
+  std::unique_ptr<FilamentNetwork> filaments_;
+  std::unique_ptr<FilamentChemistry> filament_chemistry_;
   double time_ = 0.0;
 };
 

@@ -1,0 +1,32 @@
+// Soft walls keeping filament beads inside the boundary: per bead and wall
+// E = F0 λ exp(-d/λ), d the signed distance from the wall into the domain (box: each of
+// the 6 faces; sphere: R - |x - center|). Force magnitude F0 exp(-d/λ), pointing inwards.
+#pragma once
+
+#include <string>
+
+#include "filament/filament_layout.hpp"
+#include "filament/filament_params.hpp"
+#include "mech/energy_term.hpp"
+
+namespace cortex {
+
+// Energy of one bead at x (pN·nm).
+double boundaryEnergy(const BoundaryConfig& b, const Vec3& x);
+// -dE/dx for one bead at x (pN): the load the wall puts on a growing tip.
+Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x);
+
+class BoundaryRepulsionEnergy final : public EnergyTerm {
+ public:
+  BoundaryRepulsionEnergy(const FilamentLayout& layout, BoundaryConfig boundary)
+      : layout_(layout), boundary_(boundary) {}
+  const std::string& name() const override;
+  const std::string& owner() const override;
+  double evaluate(const Evaluation& e) override;
+
+ private:
+  const FilamentLayout& layout_;
+  BoundaryConfig boundary_;
+};
+
+}  // namespace cortex

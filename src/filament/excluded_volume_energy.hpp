@@ -1,0 +1,68 @@
+// Steric repulsion between cylinders that share no bead: E = k/2 (d0 - d)^2 for d < d0,
+// d the distance between the closest points of the two segments, k and d0 the means of
+// the two types' excluded_volume_stiffness and excluded_volume_distance.
+//
+// Pairs come from a Verlet-style list built with a cell list over cylinder midpoints.
+// A pair is listed when its segment distance at the build is below d0 + skin; since
+// moving every bead by less than skin/2 moves every point of a segment by less than
+// skin/2, such pair distances change by less than skin, so the list stays complete until
+// some bead has moved skin/2. evaluate() rebuilds when that happens or the layout
+// version changed, so the energy is exact at every call.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "filament/filament_layout.hpp"
+#include "filament/filament_params.hpp"
+#include "mech/energy_term.hpp"
+
+namespace cortex {
+
+// Closest points p0 + s (p1 - p0) and q0 + t (q1 - q0), s, t in [0, 1], of two segments.
+// Parallel segments (and zero-length ones) get a deterministic choice among the minimizers.
+struct SegmentClosestPoints {
+  double s, t;
+  Vec3 delta;  // closest point on p minus closest point on q
+};
+SegmentClosestPoints closestPoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
+
+class CylinderExclusionEnergy final : public EnergyTerm {
+ public:
+  CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
+                          double skin = 10.0);  // nm
+  const std::string& name() const override;
+  const std::string& owner() const override;
+  double evaluate(const Evaluation& e) override;
+
+  // Diagnostics, for tests and benchmarks.
+  std::int64_t rebuilds() const { return rebuilds_; }
+  std::size_t listedPairs() const { return pairs_.size(); }
+
+ private:
+  struct Pair {
+    Index a, b;
+    double stiffness, distance;
+  };
+  bool needsRebuild(const double* x) const;
+  void rebuild(const double* x);
+
+  const FilamentLayout& layout_;
+  const std::vector<FilamentType>& types_;
+  double skin_;
+  std::vector<Pair> pairs_;
+  // State at the last build: layout version and bead positions.
+  bool built_ = false;
+  std::uint64_t built_version_ = 0;
+  Index built_offset_ = 0;
+  std::vector<double> built_x_;
+  std::int64_t rebuilds_ = 0;
+  // Cell-list scratch, kept to avoid reallocating on every rebuild.
+  std::vector<Vec3> midpoint_;
+  std::vector<double> half_length_;
+  std::vector<Index> cell_of_, cell_start_, cell_items_, cursor_;
+  std::vector<std::uint64_t> excluded_;  // cylinder pairs (a < b) joined by a branch
+};
+
+}  // namespace cortex

@@ -1,0 +1,102 @@
+// Filament reactions in the stochastic engine (MEDYAN's scheme; Popov, Komianos & Papoian
+// 2016): end growth and shrinkage, nucleation, linker and motor binding, unbinding and
+// walking, Arp2/3 branching and unbranching, each one hooked reaction per type. A hooked
+// reaction's rate factor in a compartment is the sum over the sites it may act on there
+// (ends, bound proteins, candidate site pairs), each weighted by its force-dependent
+// factor; when it fires, fired() picks one of them with that weight and edits the
+// network. Everything force-dependent is recomputed after each minimization
+// (updateMechanochemistry): loads on ends (Brownian ratchet, thesis eq. 2.14), linker
+// and motor tensions, and the candidate pairs within binding range.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "chem/chemistry_engine.hpp"
+#include "chem/reaction_hook.hpp"
+#include "filament/filament_network.hpp"
+
+namespace cortex {
+
+enum class FilamentReaction : std::uint8_t {
+  kPlusGrow, kPlusShrink, kMinusGrow, kMinusShrink, kNucleate,
+  kLinkerBind, kLinkerUnbind, kMotorBind, kMotorUnbind, kMotorWalk,
+  kBranch, kUnbranch,
+};
+inline constexpr int kFilamentReactionKinds = 12;
+
+class FilamentChemistry final : public ReactionHook {
+ public:
+  // kT in pN·nm. Resolves species names against `model` (InputError if missing).
+  FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT);
+
+  // Appends one hooked reaction per (kind, type) with a non-zero rate to `model`.
+  void addReactions(ChemistryModel& model);
+
+  bool fired(Index reaction, Index compartment, ChemistryEngine& engine, RandomStream& random) override;
+
+  // After a minimization (or at the start, or after a restore): recomputes end loads,
+  // spring tensions, candidate binding pairs and branching sites from the positions, then
+  // every rate factor that changed.
+  void updateMechanochemistry(ChemistryEngine& engine);
+
+  // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
+  double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
+  double endLoad(Index f, bool plus_end) const { return load_[f][plus_end ? 1 : 0]; }
+
+  // Force-dependent laws (exposed for tests).
+  double slipFactor(const LinkerType& l, double tension) const;
+  static double catchFactor(const MotorType& m, double tension);
+  static double walkFactor(const MotorType& m, double tension);
+
+ private:
+  struct Channel {
+    FilamentReaction kind;
+    Index type;      // filament, linker, motor or brancher type
+    Index reaction;  // index in the model
+  };
+  // Candidate pairs (or branching sites) of one binding channel, grouped by compartment.
+  struct Candidate {
+    std::array<Index, 2> filament;
+    std::array<std::int64_t, 2> site;
+  };
+  struct Candidates {
+    std::vector<Index> start;  // per compartment, into list; size C + 1
+    std::vector<Candidate> list;
+    Index count(Index c) const { return start[c + 1] - start[c]; }
+  };
+
+  Index channelOf(FilamentReaction kind, Index type) const;
+  Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
+  Vec3 bindingMidpoint(BinderKind kind, const Binding& b) const;
+  void computeLoads();
+  void computeTensions();
+  void findCandidates();
+  Candidates pairsFor(BinderKind kind, Index type, double rmin, double rmax, int every) const;
+  // Recomputes every factor and passes the changed ones to the engine.
+  void syncFactors(ChemistryEngine& engine);
+  // The event, on the object picked with its weight among those in compartment c.
+  bool fireEnd(const Channel& ch, Index c, ChemistryEngine& engine, RandomStream& random);
+  bool fireNucleation(const Channel& ch, Index c, RandomStream& random);
+  bool fireBind(const Channel& ch, Index c, RandomStream& random);
+  bool fireUnbind(const Channel& ch, Index c, RandomStream& random);
+  bool fireWalk(const Channel& ch, Index c, RandomStream& random);
+  bool fireBranch(const Channel& ch, Index c, RandomStream& random);
+  bool fireUnbranch(const Channel& ch, Index c, RandomStream& random);
+  void release(const std::vector<Release>& released, ChemistryEngine& engine);
+  bool insideBoundary(const Vec3& x) const;
+
+  FilamentNetwork& net_;
+  CompartmentGrid grid_;
+  double kT_;
+  std::vector<Index> monomer_species_;  // per filament type, -1 if none
+  std::vector<Channel> channels_;
+  std::array<std::vector<Index>, kFilamentReactionKinds> lookup_;  // [kind][type] -> channel or -1
+  std::vector<double> factor_;                                       // [channel * C + c], as set in the engine
+  std::vector<Candidates> candidates_;                               // per channel (binding kinds only)
+  std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
+  std::vector<Release> released_;                                    // scratch
+};
+
+}  // namespace cortex

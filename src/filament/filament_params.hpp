@@ -1,0 +1,125 @@
+// Typed parameters of filaments and the proteins that act on them, as parsed and
+// validated by io/filament_config.cpp. Units: nm, s, pN, pN·nm; end rates 1/(µM·s) and
+// 1/s (ARCHITECTURE.md). Defaults are actin / α-actinin / non-muscle myosin IIA /
+// Arp2/3 values from the MEDYAN papers (Popov, Komianos & Papoian 2016, Table S1-S3)
+// and the sources docs/filaments.md cites.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace cortex {
+
+struct FilamentType {
+  std::string name = "actin";
+  std::string monomer_species;     // [[species]] name; empty only when all end rates are 0
+  Index monomer_species_index = -1;  // resolved by the parser; -1 when monomer_species is empty
+  double monomer_size = 2.7;       // nm, length added per monomer (delta)
+  int cylinder_monomers = 40;      // monomers per full cylinder
+  double bending_stiffness = 672.0;     // pN·nm, E = K (1 - cos theta) per hinge
+  double stretching_stiffness = 100.0;  // pN/nm, E = k/2 (l - l0)^2 per cylinder
+  double plus_on = 0.0, plus_off = 0.0;    // 1/(µM·s), 1/s
+  double minus_on = 0.0, minus_off = 0.0;  // 1/(µM·s), 1/s
+  double excluded_volume_stiffness = 10.0; // pN/nm, E = k/2 (d0 - d)^2 for d < d0
+  double excluded_volume_distance = 7.0;   // nm, d0 (twice the actin radius)
+  double nucleation_rate = 0.0;            // 1/(µM·s), "2 monomer -> dimer filament" per compartment
+};
+
+// Initial filaments of one type.
+struct FilamentInit {
+  std::string type;          // FilamentType name
+  Index type_index = 0;      // resolved by the parser
+  int count = 1;
+  double length = 108.0;     // nm (rounded to whole monomers)
+  enum class Placement { kRandom, kBundle } placement = Placement::kRandom;
+  // random: minus ends uniform in [region_min, region_max] (default: the boundary's
+  // box, shrunk so that whole filaments fit), directions uniform on the sphere.
+  std::optional<std::array<Vec3, 2>> region;
+  // bundle: parallel filaments on a hexagonal lattice around `center`, axis `direction`,
+  // neighbours `spacing` nm apart; filaments are centred on `center` along the axis.
+  Vec3 center = Vec3::Zero();
+  Vec3 direction = Vec3::UnitX();
+  double spacing = 10.0;
+  // Hold the minus-end bead fixed in space (an anchored filament; its minus end is then
+  // inert, neither growing nor shrinking).
+  bool fixed_minus_end = false;
+};
+
+// A cross-linker (or a myosin minifilament, see MotorType) is a diffusing species that
+// binds two binding sites on different filaments whose distance lies in
+// [min_distance, max_distance]; bound, it is a harmonic spring of rest length the
+// distance at binding.
+struct LinkerType {
+  std::string name;
+  std::string species;          // diffusing [[species]] name (the unbound copies)
+  Index species_index = -1;
+  double min_distance = 30.0, max_distance = 40.0;  // nm
+  double on_rate = 0.0;         // 1/(µM·s) per available site pair
+  double off_rate = 0.0;        // 1/s at zero force
+  double stiffness = 8.0;       // pN/nm
+  double slip_length = 0.24;    // nm, slip bond: k_off(F) = off_rate exp(|F| x / kBT)
+  int site_spacing = 10;        // monomers between binding sites on a filament
+};
+
+// Non-muscle myosin II minifilament: binds like a linker, walks both ends towards the
+// plus ends, stalls under load (Hill), and unbinds more slowly under tension (catch bond).
+struct MotorType {
+  std::string name;
+  std::string species;
+  Index species_index = -1;
+  double min_distance = 175.0, max_distance = 225.0;  // nm
+  double on_rate = 0.0;         // 1/(µM·s) per available site pair
+  double off_rate = 0.0;        // 1/s at zero force
+  double walk_rate = 0.0;       // 1/s per end at zero force
+  double step_size = 6.0;       // nm per step (rounded to whole monomers)
+  double stall_force = 90.0;    // pN, walking stops: k_walk(F) = k0 max(0, (Fs - F)/(Fs + F/alpha))
+  double hill_alpha = 0.2;      // Hill's constant alpha
+  double catch_force = 12.62;   // pN, catch bond: k_off(F) = off_rate exp(-F / F_c) for F > 0
+  double stiffness = 2.5;       // pN/nm
+  int site_spacing = 10;        // monomers between the sites where a motor may bind (walking
+                                // then moves it step by step between them)
+};
+
+// Arp2/3: a diffusing complex that, bound to a site on a filament, nucleates a daughter
+// filament at `angle` to its mother, the complex itself being the daughter's first
+// monomer (so the daughter never depolymerizes below it).
+struct BrancherType {
+  std::string name;
+  std::string species;
+  Index species_index = -1;
+  std::string filament_type;    // type of mothers and daughters
+  Index filament_type_index = 0;
+  double rate = 0.0;            // 1/(µM·s) per available site
+  double unbranch_rate = 0.0;   // 1/s: the daughter detaches, the complex is released
+  double angle = 70.0;          // degrees between mother and daughter
+  double angle_stiffness = 100.0;     // pN·nm, E = K (cos theta - cos theta0)^2
+  double position_stiffness = 100.0;  // pN/nm, daughter's minus end to the site
+  int site_spacing = 10;        // monomers
+};
+
+// Walls that keep filament beads in: E = F0 λ exp(-d/λ) per bead and wall (force
+// F0 exp(-d/λ)), d the distance to the wall.
+struct BoundaryConfig {
+  enum class Shape { kBox, kSphere } shape = Shape::kBox;
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // box (default: the compartment grid's box)
+  Vec3 center = Vec3::Zero();                   // sphere
+  double radius = 0.0;
+  double repulsion = 41.0;         // pN, F0
+  double screening_length = 2.7;   // nm, λ
+};
+
+struct FilamentConfig {
+  std::vector<FilamentType> types;
+  std::vector<FilamentInit> initial;
+  std::vector<LinkerType> linkers;
+  std::vector<MotorType> motors;
+  std::vector<BrancherType> branchers;
+  std::optional<BoundaryConfig> boundary;
+};
+
+}  // namespace cortex

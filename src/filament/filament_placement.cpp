@@ -1,0 +1,147 @@
+#include "filament/filament_placement.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace cortex {
+namespace {
+
+constexpr int kMaxTries = 100'000;
+
+// The walls shrunk by the margin: a convex set, so a straight filament is inside
+// whenever both its ends are.
+struct Walls {
+  bool sphere = false;
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // box, or the sphere's bounding box
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;
+  double margin = 0.0;
+
+  bool contains(const Vec3& x) const {
+    if (sphere) return (x - center).norm() <= radius;
+    return (x.array() >= min.array()).all() && (x.array() <= max.array()).all();
+  }
+};
+
+Walls shrunkWalls(const FilamentConfig& config, const Vec3& box_min, const Vec3& box_max) {
+  const double margin = placementMargin(config);
+  Walls w;
+  w.margin = margin;
+  if (config.boundary && config.boundary->shape == BoundaryConfig::Shape::kSphere) {
+    w.sphere = true;
+    w.center = config.boundary->center;
+    w.radius = config.boundary->radius - margin;
+    w.min = w.center - Vec3::Constant(w.radius);
+    w.max = w.center + Vec3::Constant(w.radius);
+  } else {
+    w.min = (config.boundary ? config.boundary->min : box_min) + Vec3::Constant(margin);
+    w.max = (config.boundary ? config.boundary->max : box_max) - Vec3::Constant(margin);
+  }
+  return w;
+}
+
+int monomersOf(const FilamentInit& init, const FilamentType& type) {
+  return std::max(1, static_cast<int>(std::lround(init.length / type.monomer_size)));
+}
+
+Vec3 randomDirection(RandomStream& random) {
+  const double z = 2.0 * random.uniform() - 1.0;
+  const double phi = 2.0 * std::numbers::pi * random.uniform();
+  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+}
+
+bool fits(const Walls& walls, const Vec3& minus_end, const Vec3& direction, double length) {
+  return walls.contains(minus_end) && walls.contains(minus_end + direction * length);
+}
+
+void placeRandom(const FilamentInit& init, std::size_t entry, const FilamentType& type, const Walls& walls,
+                 RandomStream& random, std::vector<FilamentSeed>& out) {
+  const int monomers = monomersOf(init, type);
+  const double length = monomers * type.monomer_size;
+  const Vec3 lo = init.region ? (*init.region)[0] : walls.min;
+  const Vec3 hi = init.region ? (*init.region)[1] : walls.max;
+  for (int n = 0; n < init.count; ++n) {
+    int tries = 0;
+    for (;; ++tries) {
+      if (tries == kMaxTries)
+        throw InputError(fmt::format("filaments.{}: filament {} of {} ({:g} nm) does not fit inside the boundary "
+                                     "(with a {:g} nm margin) after {} tries; shorten it or widen the region",
+                                     entry, n, init.count, length, walls.margin, kMaxTries));
+      Vec3 minus_end;
+      for (int k = 0; k < 3; ++k) minus_end[k] = lo[k] + (hi[k] - lo[k]) * random.uniform();
+      const Vec3 direction = randomDirection(random);
+      if (fits(walls, minus_end, direction, length)) {
+        out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end});
+        break;
+      }
+    }
+  }
+}
+
+// The first `count` points of a hexagonal lattice with unit spacing in axial
+// coordinates: the origin, then ring after ring (Red Blob Games' ring walk).
+std::vector<std::array<double, 2>> hexagonalLattice(int count) {
+  static constexpr int kSteps[6][2] = {{1, 0}, {1, -1}, {0, -1}, {-1, 0}, {-1, 1}, {0, 1}};
+  std::vector<std::array<double, 2>> points;
+  auto add = [&](int q, int r) { points.push_back({q + 0.5 * r, std::sqrt(3.0) / 2.0 * r}); };
+  if (count > 0) add(0, 0);
+  for (int ring = 1; static_cast<int>(points.size()) < count; ++ring) {
+    int q = -ring, r = ring;  // ring * kSteps[4]
+    for (int side = 0; side < 6; ++side)
+      for (int j = 0; j < ring; ++j) {
+        add(q, r);
+        q += kSteps[side][0];
+        r += kSteps[side][1];
+      }
+  }
+  points.resize(static_cast<std::size_t>(std::max(count, 0)));
+  return points;
+}
+
+void placeBundle(const FilamentInit& init, std::size_t entry, const FilamentType& type, const Walls& walls,
+                 std::vector<FilamentSeed>& out) {
+  const int monomers = monomersOf(init, type);
+  const double length = monomers * type.monomer_size;
+  const Vec3 axis = init.direction.normalized();
+  const Vec3 e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  const auto lattice = hexagonalLattice(init.count);
+  for (std::size_t n = 0; n < lattice.size(); ++n) {
+    const Vec3 point = init.center + init.spacing * (lattice[n][0] * e1 + lattice[n][1] * e2);
+    const Vec3 minus_end = point - axis * (length / 2);
+    if (!fits(walls, minus_end, axis, length))
+      throw InputError(fmt::format("filaments.{}: bundle filament {} of {} (lattice point [{:g}, {:g}, {:g}] nm, "
+                                   "{:g} nm long) does not fit inside the boundary; move center, or reduce "
+                                   "count, spacing or length",
+                                   entry, n, init.count, point.x(), point.y(), point.z(), length));
+    out.push_back({init.type_index, minus_end, axis, monomers, init.fixed_minus_end});
+  }
+}
+
+}  // namespace
+
+double placementMargin(const FilamentConfig& config) {
+  return config.boundary ? 2.0 * config.boundary->screening_length : 0.0;
+}
+
+std::vector<FilamentSeed> placeFilaments(const FilamentConfig& config, const Vec3& box_min, const Vec3& box_max,
+                                         RandomStream& random) {
+  const Walls walls = shrunkWalls(config, box_min, box_max);
+  std::vector<FilamentSeed> seeds;
+  for (std::size_t i = 0; i < config.initial.size(); ++i) {
+    const FilamentInit& init = config.initial[i];
+    const FilamentType& type = config.types.at(static_cast<std::size_t>(init.type_index));
+    if (init.placement == FilamentInit::Placement::kBundle)
+      placeBundle(init, i, type, walls, seeds);
+    else
+      placeRandom(init, i, type, walls, random, seeds);
+  }
+  return seeds;
+}
+
+}  // namespace cortex

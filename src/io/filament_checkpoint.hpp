@@ -1,0 +1,16 @@
+// The filament network's part of checkpoint.h5 (group /filaments): filaments with their
+// beads and monomer lattices, bound linkers and motors, and branches. Tensions, loads and
+// candidate binding pairs are not stored: they follow from the positions.
+#pragma once
+
+#include "filament/filament_network.hpp"
+#include "io/hdf5_file.hpp"
+#include "sim/filament_builder.hpp"
+
+namespace cortex {
+
+void writeFilamentState(h5::File& file, const FilamentNetwork& network);
+// Throws InputError naming the file for malformed data.
+FilamentState readFilamentState(const h5::File& file, const std::string& file_name);
+
+}  // namespace cortex

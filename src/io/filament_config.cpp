@@ -1,0 +1,280 @@
+#include "io/filament_config.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace cortex {
+namespace {
+
+using Shape = BoundaryConfig::Shape;
+constexpr std::int64_t kMaxCount = 10'000'000;
+
+Vec3 readVec(const ConfigReader& r, const std::string& key, const char* unit) {
+  const auto v = r.numbers(key, 3, Range{}, unit);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+void checkName(const ConfigReader& r, const std::string& name) {
+  if (name.empty() || name.find_first_of(" \t/") != std::string::npos)
+    r.fail("name", fmt::format("must be a non-empty name without spaces or '/', got \"{}\"", name));
+}
+
+Index speciesIndex(const ConfigReader& r, const std::string& key, const std::vector<SpeciesDef>& species) {
+  if (!r.has(key)) r.fail(key, "is required (the name of a [[species]])");
+  const std::string name = r.string(key, "");
+  for (std::size_t i = 0; i < species.size(); ++i)
+    if (species[i].name == name) return static_cast<Index>(i);
+  r.fail(key, species.empty() ? fmt::format("names \"{}\" but the config has no [[species]]", name)
+                              : fmt::format("no [[species]] is named \"{}\"", name));
+}
+
+// `key` names a [[filament_type]]; it may be omitted when there is only one.
+Index typeIndex(const ConfigReader& r, const std::string& key, const std::vector<FilamentType>& types,
+                std::string& name) {
+  if (!r.has(key) && types.size() > 1) r.fail(key, "is required when there are several [[filament_type]]");
+  name = r.string(key, types.front().name);
+  for (std::size_t i = 0; i < types.size(); ++i)
+    if (types[i].name == name) return static_cast<Index>(i);
+  r.fail(key, fmt::format("no [[filament_type]] is named \"{}\"", name));
+}
+
+FilamentType readType(const ConfigReader& r, bool single, const std::vector<SpeciesDef>& species) {
+  FilamentType t;
+  if (!single && !r.has("name")) r.fail("name", "is required when there are several [[filament_type]]");
+  t.name = r.string("name", t.name);
+  checkName(r, t.name);
+  t.monomer_size = r.number("monomer_size", t.monomer_size, Range::positive(), "nm");
+  t.cylinder_monomers = static_cast<int>(r.integer("cylinder_monomers", t.cylinder_monomers, 1, 1'000'000));
+  t.bending_stiffness = r.number("bending_stiffness", t.bending_stiffness, Range::nonNegative(), "pN·nm");
+  t.stretching_stiffness = r.number("stretching_stiffness", t.stretching_stiffness, Range::positive(), "pN/nm");
+  t.plus_on = r.number("plus_on", t.plus_on, Range::nonNegative(), "1/(µM·s)");
+  t.plus_off = r.number("plus_off", t.plus_off, Range::nonNegative(), "1/s");
+  t.minus_on = r.number("minus_on", t.minus_on, Range::nonNegative(), "1/(µM·s)");
+  t.minus_off = r.number("minus_off", t.minus_off, Range::nonNegative(), "1/s");
+  t.excluded_volume_stiffness =
+      r.number("excluded_volume_stiffness", t.excluded_volume_stiffness, Range::nonNegative(), "pN/nm");
+  t.excluded_volume_distance =
+      r.number("excluded_volume_distance", t.excluded_volume_distance, Range::positive(), "nm");
+  t.nucleation_rate = r.number("nucleation_rate", t.nucleation_rate, Range::nonNegative(), "1/(µM·s)");
+  const bool exchanges = t.plus_on > 0 || t.plus_off > 0 || t.minus_on > 0 || t.minus_off > 0 || t.nucleation_rate > 0;
+  if (r.has("monomer_species")) {
+    t.monomer_species_index = speciesIndex(r, "monomer_species", species);
+    t.monomer_species = species[t.monomer_species_index].name;
+  } else if (exchanges) {
+    r.fail("monomer_species", "is required (the [[species]] of free monomers) when an end rate or "
+                              "nucleation_rate is non-zero");
+  }
+  r.finish();
+  return t;
+}
+
+BoundaryConfig readBoundary(const ConfigReader& r, const Vec3& grid_max) {
+  BoundaryConfig b;
+  if (r.choice("shape", "box", {"box", "sphere"}) == "sphere") {
+    b.shape = Shape::kSphere;
+    for (const char* k : {"min", "max"})
+      if (r.has(k)) r.fail(k, "is for shape = \"box\"; a sphere takes center and radius");
+    b.center = readVec(r, "center", "nm");
+    b.radius = r.requiredNumber("radius", Range::positive(), "nm");
+  } else {
+    for (const char* k : {"center", "radius"})
+      if (r.has(k)) r.fail(k, "is for shape = \"sphere\"; a box takes min and max");
+    b.min = r.has("min") ? readVec(r, "min", "nm") : Vec3::Zero();
+    b.max = r.has("max") ? readVec(r, "max", "nm") : grid_max;
+    if (!(b.min.array() < b.max.array()).all())
+      r.fail(r.has("max") ? "max" : "min",
+             fmt::format("min [{:g}, {:g}, {:g}] must be below max [{:g}, {:g}, {:g}] on every axis (nm)", b.min.x(),
+                         b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()));
+  }
+  b.repulsion = r.number("repulsion", b.repulsion, Range::nonNegative(), "pN");
+  b.screening_length = r.number("screening_length", b.screening_length, Range::positive(), "nm");
+  r.finish();
+  return b;
+}
+
+// The space filaments start in: its centre, and its largest extent (box diagonal or
+// sphere diameter) with a description for messages.
+struct Space {
+  Vec3 centre;
+  double extent;
+  const char* what;
+};
+
+Space spaceOf(const std::optional<BoundaryConfig>& b, const Vec3& grid_max) {
+  if (!b) return {grid_max / 2, grid_max.norm(), "compartment grid's box diagonal"};
+  if (b->shape == Shape::kSphere) return {b->center, 2 * b->radius, "boundary sphere's diameter"};
+  return {(b->min + b->max) / 2, (b->max - b->min).norm(), "boundary box's diagonal"};
+}
+
+FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& types, const Space& space) {
+  FilamentInit f;
+  f.type_index = typeIndex(r, "type", types, f.type);
+  const FilamentType& t = types[f.type_index];
+  f.count = static_cast<int>(r.integer("count", f.count, 0, kMaxCount));
+  f.length = r.number("length", f.length, Range::positive(), "nm");
+  if (f.length < t.monomer_size)
+    r.fail("length", fmt::format("({:g} nm) is shorter than one monomer of \"{}\" ({:g} nm)", f.length, t.name,
+                                 t.monomer_size));
+  if (f.length > space.extent)
+    r.fail("length", fmt::format("({:g} nm) exceeds the {} ({:g} nm): no filament fits", f.length, space.what,
+                                 space.extent));
+  f.fixed_minus_end = r.boolean("fixed_minus_end", f.fixed_minus_end);
+  if (r.choice("placement", "random", {"random", "bundle"}) == "bundle") {
+    f.placement = FilamentInit::Placement::kBundle;
+    if (r.has("region")) r.fail("region", "is for placement = \"random\"");
+    f.center = r.has("center") ? readVec(r, "center", "nm") : space.centre;
+    if (r.has("direction")) {
+      const Vec3 d = readVec(r, "direction", "");
+      if (!(d.squaredNorm() > 0)) r.fail("direction", "must not be the zero vector");
+      f.direction = d.normalized();
+    }
+    f.spacing = r.number("spacing", f.spacing, Range::positive(), "nm");
+  } else {
+    for (const char* k : {"center", "direction", "spacing"})
+      if (r.has(k)) r.fail(k, "is for placement = \"bundle\"");
+    if (const auto g = r.table("region")) {
+      const Vec3 lo = readVec(*g, "min", "nm"), hi = readVec(*g, "max", "nm");
+      g->finish();
+      if (!(lo.array() < hi.array()).all()) r.fail("region", "min must be below max on every axis");
+      f.region = std::array<Vec3, 2>{lo, hi};
+    }
+  }
+  r.finish();
+  return f;
+}
+
+// Name and species of a linker, motor or brancher; the name defaults to the species'.
+template <class Protein>
+void readIdentity(const ConfigReader& r, Protein& p, const std::vector<SpeciesDef>& species) {
+  p.species_index = speciesIndex(r, "species", species);
+  p.species = species[p.species_index].name;
+  p.name = r.string("name", p.species);
+  checkName(r, p.name);
+}
+
+// Binding between two filaments, shared by linkers and motors.
+template <class Protein>
+void readBinding(const ConfigReader& r, Protein& p) {
+  p.min_distance = r.number("min_distance", p.min_distance, Range::nonNegative(), "nm");
+  p.max_distance = r.number("max_distance", p.max_distance, Range::positive(), "nm");
+  if (!(p.min_distance < p.max_distance))
+    r.fail("max_distance",
+           fmt::format("({:g} nm) must exceed min_distance ({:g} nm)", p.max_distance, p.min_distance));
+  p.on_rate = r.number("on_rate", p.on_rate, Range::nonNegative(), "1/(µM·s)");
+  p.off_rate = r.number("off_rate", p.off_rate, Range::nonNegative(), "1/s");
+  p.stiffness = r.number("stiffness", p.stiffness, Range::positive(), "pN/nm");
+}
+
+int readSiteSpacing(const ConfigReader& r, int fallback) {
+  return static_cast<int>(r.integer("site_spacing", fallback, 1, 1'000'000));
+}
+
+LinkerType readLinker(const ConfigReader& r, const std::vector<SpeciesDef>& species) {
+  LinkerType l;
+  readIdentity(r, l, species);
+  readBinding(r, l);
+  l.slip_length = r.number("slip_length", l.slip_length, Range::nonNegative(), "nm");
+  l.site_spacing = readSiteSpacing(r, l.site_spacing);
+  r.finish();
+  return l;
+}
+
+MotorType readMotor(const ConfigReader& r, const std::vector<SpeciesDef>& species) {
+  MotorType m;
+  readIdentity(r, m, species);
+  readBinding(r, m);
+  m.walk_rate = r.number("walk_rate", m.walk_rate, Range::nonNegative(), "1/s");
+  m.step_size = r.number("step_size", m.step_size, Range::positive(), "nm");
+  m.stall_force = r.number("stall_force", m.stall_force, Range::positive(), "pN");
+  m.hill_alpha = r.number("hill_alpha", m.hill_alpha, Range::positive(), "");
+  m.catch_force = r.number("catch_force", m.catch_force, Range::positive(), "pN");
+  m.site_spacing = readSiteSpacing(r, m.site_spacing);
+  r.finish();
+  return m;
+}
+
+BrancherType readBrancher(const ConfigReader& r, const std::vector<FilamentType>& types,
+                          const std::vector<SpeciesDef>& species) {
+  BrancherType b;
+  readIdentity(r, b, species);
+  b.filament_type_index = typeIndex(r, "filament_type", types, b.filament_type);
+  b.rate = r.number("rate", b.rate, Range::nonNegative(), "1/(µM·s)");
+  b.unbranch_rate = r.number("unbranch_rate", b.unbranch_rate, Range::nonNegative(), "1/s");
+  b.angle = r.number("angle", b.angle, Range{0.0, 180.0, true, true}, "degrees");
+  b.angle_stiffness = r.number("angle_stiffness", b.angle_stiffness, Range::nonNegative(), "pN·nm");
+  b.position_stiffness = r.number("position_stiffness", b.position_stiffness, Range::positive(), "pN/nm");
+  b.site_spacing = readSiteSpacing(r, b.site_spacing);
+  r.finish();
+  return b;
+}
+
+// Linkers, motors and branchers each need their own name and their own diffusing
+// species, distinct from every filament type's monomers (a copy cannot be two things).
+class ProteinNames {
+ public:
+  explicit ProteinNames(const std::vector<FilamentType>& types) : types_(types) {}
+  void add(const ConfigReader& r, const std::string& owner, const std::string& name, const std::string& species) {
+    for (const auto& [n, o] : names_)
+      if (n == name) r.fail("name", fmt::format("\"{}\" is the name of {} already", name, o));
+    for (const auto& [s, o] : species_)
+      if (s == species) r.fail("species", fmt::format("\"{}\" is the species of {} already", species, o));
+    for (const FilamentType& t : types_)
+      if (t.monomer_species == species)
+        r.fail("species", fmt::format("\"{}\" is the monomer species of filament type \"{}\"", species, t.name));
+    names_.emplace_back(name, owner);
+    species_.emplace_back(species, owner);
+  }
+
+ private:
+  const std::vector<FilamentType>& types_;
+  std::vector<std::pair<std::string, std::string>> names_, species_;
+};
+
+}  // namespace
+
+std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry) {
+  const auto type_tables = root.tableArray("filament_type");
+  if (type_tables.empty()) {
+    for (const char* k : {"filaments", "boundary", "linker", "motor", "brancher"})
+      if (root.has(k)) root.fail(k, "needs at least one [[filament_type]]");
+    return std::nullopt;
+  }
+  const std::vector<SpeciesDef> no_species;
+  const std::vector<SpeciesDef>& species = chemistry ? chemistry->model.species : no_species;
+  const CompartmentGrid grid = chemistry ? chemistry->model.grid : CompartmentGrid{};
+  const Vec3 grid_max = grid.size * Vec3(grid.shape[0], grid.shape[1], grid.shape[2]);
+
+  FilamentConfig f;
+  for (std::size_t i = 0; i < type_tables.size(); ++i) {
+    f.types.push_back(readType(type_tables[i], type_tables.size() == 1, species));
+    for (std::size_t j = 0; j < i; ++j)
+      if (f.types[j].name == f.types[i].name)
+        type_tables[i].fail("name", fmt::format("\"{}\" is used by filament_type.{} already", f.types[i].name, j));
+  }
+  if (const auto b = root.table("boundary")) f.boundary = readBoundary(*b, grid_max);
+  const Space space = spaceOf(f.boundary, grid_max);
+  for (const ConfigReader& r : root.tableArray("filaments")) f.initial.push_back(readInit(r, f.types, space));
+
+  ProteinNames names(f.types);
+  const auto linkers = root.tableArray("linker");
+  for (std::size_t i = 0; i < linkers.size(); ++i) {
+    f.linkers.push_back(readLinker(linkers[i], species));
+    names.add(linkers[i], fmt::format("linker.{}", i), f.linkers.back().name, f.linkers.back().species);
+  }
+  const auto motors = root.tableArray("motor");
+  for (std::size_t i = 0; i < motors.size(); ++i) {
+    f.motors.push_back(readMotor(motors[i], species));
+    names.add(motors[i], fmt::format("motor.{}", i), f.motors.back().name, f.motors.back().species);
+  }
+  const auto branchers = root.tableArray("brancher");
+  for (std::size_t i = 0; i < branchers.size(); ++i) {
+    f.branchers.push_back(readBrancher(branchers[i], f.types, species));
+    names.add(branchers[i], fmt::format("brancher.{}", i), f.branchers.back().name, f.branchers.back().species);
+  }
+  return f;
+}
+
+}  // namespace cortex

@@ -1,0 +1,59 @@
+// Small filament systems for the chemistry tests: a compartment grid, species, a network
+// and its hooked reactions, wired into a next-subvolume engine without mechanics.
+#pragma once
+
+#include <memory>
+
+#include "chem/chemistry_engine.hpp"
+#include "core/constants.hpp"
+#include "filament/filament_chemistry.hpp"
+#include "filament/filament_network.hpp"
+
+namespace cortex::filtest {
+
+inline constexpr double kT = constants::kBoltzmann * 298.15;
+
+// Actin with the MEDYAN end rates of BENCHMARKS.md, species 0 its monomer.
+inline FilamentType actin() {
+  FilamentType t;
+  t.monomer_species = "G";
+  t.monomer_species_index = 0;
+  t.plus_on = 11.6, t.plus_off = 1.4, t.minus_on = 1.3, t.minus_off = 0.8;
+  return t;
+}
+
+struct Rig {
+  ChemistryModel model;
+  std::unique_ptr<FilamentNetwork> network;
+  std::unique_ptr<FilamentChemistry> chemistry;
+  std::unique_ptr<ChemistryEngine> engine;
+
+  // One compartment per `shape` entry of edge `size`; species copies all in compartment 0
+  // unless `spread`; `build` adds filaments to the network before the engine starts.
+  template <class Build>
+  Rig(double size, std::array<int, 3> shape, std::vector<SpeciesDef> species, std::vector<int> copies,
+      FilamentConfig config, Build&& build, std::uint64_t seed = 7) {
+    model.grid.size = size;
+    model.grid.shape = shape;
+    model.species = std::move(species);
+    network = std::make_unique<FilamentNetwork>(std::move(config));
+    build(*network);
+    chemistry = std::make_unique<FilamentChemistry>(*network, model, kT);
+    chemistry->addReactions(model);
+    std::vector<int> all(static_cast<std::size_t>(model.grid.count()) * model.species.size(), 0);
+    for (std::size_t s = 0; s < copies.size(); ++s) all[s] = copies[s];
+    engine = makeChemistryEngine(EngineKind::kNextSubvolume, model, all, seed);
+    engine->setReactionHook(chemistry.get());
+    chemistry->updateMechanochemistry(*engine);
+  }
+
+  int total(Index species) const {
+    int n = 0;
+    for (Index c = 0; c < model.grid.count(); ++c) n += engine->copies(c, species);
+    return n;
+  }
+};
+
+inline double copiesPerMicromolar(double size) { return kCopiesPerMicromolarFemtoliter * size * size * size * 1e-9; }
+
+}  // namespace cortex::filtest
