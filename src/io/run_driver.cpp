@@ -9,17 +9,14 @@
 
 #include <chrono>
 
-#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
 #include "io/run_observer.hpp"
+#include "io/system_builder.hpp"
 #include "io/summary.hpp"
 #include "io/trajectory_writer.hpp"
-#include "sim/chemistry_builder.hpp"
 #include "sim/confinement.hpp"
-#include "sim/filament_builder.hpp"
-#include "sim/membrane_builder.hpp"
 #include "sim/simulation.hpp"
 
 namespace cortex {
@@ -35,72 +32,6 @@ void setUpLogging(const std::filesystem::path& outdir, bool append) {
   logger->set_level(spdlog::level::debug);
   logger->flush_on(spdlog::level::info);
   spdlog::set_default_logger(logger);
-}
-
-std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* restored) {
-  std::vector<std::unique_ptr<Membrane>> membranes;
-  for (const MembraneConfig& mc : config.membranes) {
-    std::optional<MembraneState> state;
-    if (restored) {
-      auto it = restored->membranes.find(mc.name);
-      if (it == restored->membranes.end())
-        throw InputError(fmt::format("checkpoint has no membrane \"{}\"", mc.name));
-      state = it->second;
-    }
-    membranes.push_back(buildMembrane(mc, config.source, state));
-  }
-  auto system = std::make_unique<System>(std::move(membranes));
-  const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
-  // Filament reactions extend the config's reaction network (after its own reactions).
-  std::optional<ChemistryConfig> chemistry = config.chemistry;
-  std::unique_ptr<FilamentChemistry> filament_chemistry;
-  if (config.filaments) {
-    if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
-    Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();
-    if (chemistry) {
-      const CompartmentGrid& g = chemistry->model.grid;
-      box_max = Vec3(g.shape[0], g.shape[1], g.shape[2]) * g.size;
-    }
-    auto network = buildFilamentNetwork(*config.filaments, box_min, box_max, seed,
-                                        restored ? &*restored->filaments : nullptr);
-    if (chemistry) {
-      filament_chemistry = std::make_unique<FilamentChemistry>(
-          *network, chemistry->model, constants::kBoltzmann * config.simulation.temperature);
-      filament_chemistry->addReactions(chemistry->model);
-    }
-    system->setFilaments(std::move(network));
-  }
-  if (chemistry) {
-    if (restored && restored->chemistry) {
-      const ChemistryState& s = *restored->chemistry;
-      const std::size_t expected =
-          static_cast<std::size_t>(chemistry->model.grid.count()) * chemistry->model.species.size();
-      if (s.copies.size() != expected || s.reaction_events.size() != chemistry->model.reactions.size())
-        throw InputError("checkpoint chemistry does not match the config (grid, species or reactions changed)");
-      auto engine = makeChemistryEngine(chemistry->engine, chemistry->model, s.copies, seed);
-      RandomStream random(seed, StreamId::kChemistry);
-      random.restore(s.random_counter, s.random_used);
-      engine->restore(random, s.time, s.events, s.reaction_events, s.diffusion_events);
-      system->setChemistry(chemistry->model, std::move(engine), chemistry->sides);
-    } else {
-      // Confined species start uniform in the volume on their side of the membrane.
-      std::vector<std::vector<double>> weights(chemistry->sides.size());
-      const auto fractions = speciesFractions(*system, chemistry->sides, chemistry->model.grid);
-      for (std::size_t s = 0; s < fractions.size(); ++s)
-        if (fractions[s]) weights[s] = fractions[s]->volume;
-      system->setChemistry(chemistry->model, buildChemistry(*chemistry, seed, weights), chemistry->sides);
-    }
-    // The membranes as built or restored decide the confinement, and the config the
-    // reaction restrictions: nothing is stored for either.
-    system->setReactionRestrictions(chemistry->reaction_restrictions);
-    confineChemistry(*system);
-    if (filament_chemistry) {
-      system->setFilamentChemistry(std::move(filament_chemistry));
-      // Likewise the force-dependent filament rates follow from the stored positions.
-      system->updateMechanochemistry();
-    }
-  }
-  return system;
 }
 
 // A resumed run continues the stored one: overrides may extend or change physics, but not
@@ -132,6 +63,10 @@ void logThroughput(const System& system, double wall) {
                "wall {:.2f} s",
                c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s,
                per_s * system.numVertices(), c.remesh_seconds, wall);
+  if (const FilamentNetwork* net = system.filaments())
+    spdlog::info("filaments: {} beads; {} minimizations, {} force evaluations in {:.2f} s ({:.0f} force "
+                 "evaluations/s); force-dependent rates and binding-pair search {:.2f} s",
+                 net->numBeads(), c.minimizations, evals, c.mechanics_seconds, per_s, c.feedback_seconds);
   if (const ChemistryEngine* chem = system.chemistry())
     spdlog::info("chemistry: {} events ({} diffusion hops) in {:.2f} s ({:.3g} events/s)", chem->events(),
                  chem->diffusionEvents(), c.chemistry_seconds,

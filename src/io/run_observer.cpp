@@ -3,12 +3,32 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "mesh/mesh_quality.hpp"
 #include "sim/frame_builder.hpp"
 
 namespace cortex {
+namespace {
+
+void logFilaments(const System& system) {
+  const FilamentNetwork* net = system.filaments();
+  if (!net) return;
+  const FilamentChemistry* chem = system.filamentChemistry();
+  double length = 0.0, max_load = 0.0;
+  for (std::size_t i = 0; i < net->filaments().size(); ++i) {
+    length += net->filaments()[i].length();
+    if (chem)
+      for (const bool plus : {false, true}) max_load = std::max(max_load, chem->endLoad(static_cast<Index>(i), plus));
+  }
+  spdlog::info("t = {:.6g} s, filaments: {}, total length {:.4g} um; bound: {} linkers, {} motors; {} branches; "
+               "max end load {:.3g} pN",
+               system.time(), net->filaments().size(), length * 1e-3, net->linkers().size(), net->motors().size(),
+               net->branches().size(), max_load);
+}
+
+}  // namespace
 
 OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader header,
                                TrajectoryWriter& writer, double end_time, bool live_progress)
@@ -31,6 +51,7 @@ void OutputObserver::onSnapshot(const System& system) {
                  system.time(), m->name(), m->mesh().numVertices(), q.min_angle_deg, q.max_aspect_ratio,
                  q.min_dihedral_cos, r.splits, r.collapses, r.flips);
   }
+  logFilaments(system);
 }
 
 void OutputObserver::onCheckpoint(const System& system) {

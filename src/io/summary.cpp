@@ -1,5 +1,6 @@
 #include "io/summary.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -28,6 +29,54 @@ nlohmann::json chemistrySummary(const System& system) {
           {"reactions", reactions},
           {"compartments", model.grid.count()},
           {"species", species}};
+}
+
+// Bound proteins per type name (every configured type listed, 0 when none is bound).
+template <class Types, class Items>
+nlohmann::json countByType(const Types& types, const Items& items) {
+  std::vector<std::int64_t> counts(types.size(), 0);
+  for (const auto& item : items) ++counts.at(static_cast<std::size_t>(item.type));
+  nlohmann::json json = nlohmann::json::object();
+  for (std::size_t t = 0; t < types.size(); ++t) json[types[t].name] = counts[t];
+  return json;
+}
+
+nlohmann::json filamentSummary(const System& system, const std::vector<TermEnergy>& energies) {
+  using nlohmann::json;
+  const FilamentNetwork* net = system.filaments();
+  if (!net) return {{"count", 0}, {"total_length", 0.0}, {"energy", {{"total", 0.0}}}};
+  json energy = {{"stretching", 0.0}, {"bending", 0.0}, {"excluded_volume", 0.0}, {"boundary", 0.0},
+                 {"linkers", 0.0},    {"motors", 0.0},  {"branching", 0.0}};
+  double total_energy = 0.0;
+  for (const TermEnergy& e : energies)
+    if (e.owner == "filaments") {
+      energy[e.name] = e.energy;
+      total_energy += e.energy;
+    }
+  energy["total"] = total_energy;
+  double total_length = 0.0, max_load = 0.0;
+  std::int64_t monomers = 0, beads = 0;
+  const auto& filaments = net->filaments();
+  const FilamentChemistry* chem = system.filamentChemistry();
+  for (std::size_t i = 0; i < filaments.size(); ++i) {
+    total_length += filaments[i].length();
+    monomers += filaments[i].monomers();
+    beads += static_cast<std::int64_t>(filaments[i].beads.size());
+    if (chem)
+      for (const bool plus : {false, true}) max_load = std::max(max_load, chem->endLoad(static_cast<Index>(i), plus));
+  }
+  const FilamentConfig& config = net->config();
+  const auto count = static_cast<std::int64_t>(filaments.size());
+  return {{"count", count},
+          {"beads", beads},
+          {"total_length", total_length},
+          {"mean_length", count > 0 ? total_length / static_cast<double>(count) : 0.0},
+          {"monomers", monomers},
+          {"max_end_load", max_load},
+          {"energy", energy},
+          {"linkers", countByType(config.linkers, net->linkers())},
+          {"motors", countByType(config.motors, net->motors())},
+          {"branches", countByType(config.branchers, net->branches())}};
 }
 
 }  // namespace
@@ -75,7 +124,7 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
           {"seed", info.seed},
           {"threads", info.threads},
           {"membranes", membranes},
-          {"filaments", {{"count", 0}, {"total_length", 0.0}, {"energy", {{"total", 0.0}}}}},
+          {"filaments", filamentSummary(system, energies)},
           {"chemistry", chemistrySummary(system)},
           {"mechanics",
            {{"minimizations", c.minimizations},

@@ -24,7 +24,14 @@ std::int64_t parseIndex(const std::string& name) {
 // Rebuilds the XDMF description of a snapshot already in the file (for a resumed run).
 XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
   const std::string group = snapshotGroup(index);
-  XdmfSnapshot snapshot{index, file.attributeDouble(group, "time"), {}};
+  XdmfSnapshot snapshot{index, file.attributeDouble(group, "time"), {}, std::nullopt};
+  const std::string filaments = group + "/filaments";
+  if (file.exists(filaments)) {
+    const auto rows = [&](const char* dataset) {
+      return static_cast<std::int64_t>(file.shape(filaments + dataset).at(0));
+    };
+    snapshot.filaments = XdmfFilaments{rows("/beads"), rows("/cylinders"), rows("/linkers"), rows("/motors")};
+  }
   const std::string membranes = group + "/membranes";
   if (!file.exists(membranes)) return snapshot;
   for (const std::string& name : file.children(membranes)) {
@@ -60,6 +67,51 @@ XdmfMembrane writeMembrane(h5::File& file, const std::string& group,
   return {name, static_cast<std::int64_t>(n), static_cast<std::int64_t>(m)};
 }
 
+// Segment i joins rows 2i and 2i+1 of an (n,2,3) end-position dataset read as (2n,3).
+std::vector<std::int32_t> pairCells(std::size_t n) {
+  std::vector<std::int32_t> cells(2 * n);
+  for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = static_cast<std::int32_t>(i);
+  return cells;
+}
+
+// Every dataset is written even when empty, so readers need no special cases.
+XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const FilamentFrame& f) {
+  const std::size_t k = f.beads.size() / 3, n = f.ids.size(), m = f.cylinders.size() / 2;
+  const std::size_t nl = f.linker_types.size(), nm = f.motor_types.size(), b = f.branch_points.size() / 3;
+  const bool consistent =
+      f.beads.size() == 3 * k && f.offsets.size() == n + 1 && f.types.size() == n && f.lengths.size() == n &&
+      f.monomers.size() == n && f.cylinders.size() == 2 * m && f.cylinder_filament.size() == m &&
+      f.linkers.size() == 6 * nl && f.linker_tensions.size() == nl && f.motors.size() == 6 * nm &&
+      f.motor_tensions.size() == nm && f.branch_points.size() == 3 * b &&
+      f.offsets.back() == static_cast<std::int64_t>(k);
+  if (!consistent) {
+    throw RunError(fmt::format("inconsistent filament frame ({} bead coordinates, {} offsets, {} ids, {} "
+                               "cylinder indices, {} linker coordinates, {} motor coordinates)",
+                               f.beads.size(), f.offsets.size(), n, f.cylinders.size(), f.linkers.size(),
+                               f.motors.size()));
+  }
+  const std::string path = group + "/filaments/";
+  file.write(path + "beads", f.beads, {k, 3});
+  file.write(path + "offsets", f.offsets, {n + 1});
+  file.write(path + "ids", f.ids, {n});
+  file.write(path + "types", f.types, {n});
+  file.write(path + "lengths", f.lengths, {n});
+  file.write(path + "monomers", f.monomers, {n});
+  file.write(path + "cylinders", f.cylinders, {m, 2});
+  file.write(path + "cylinder_filament", f.cylinder_filament, {m});
+  file.write(path + "linkers", f.linkers, {nl, 2, 3});
+  file.write(path + "linker_types", f.linker_types, {nl});
+  file.write(path + "linker_tensions", f.linker_tensions, {nl});
+  file.write(path + "linker_cells", pairCells(nl), {nl, 2});
+  file.write(path + "motors", f.motors, {nm, 2, 3});
+  file.write(path + "motor_types", f.motor_types, {nm});
+  file.write(path + "motor_tensions", f.motor_tensions, {nm});
+  file.write(path + "motor_cells", pairCells(nm), {nm, 2});
+  file.write(path + "branch_points", f.branch_points, {b, 3});
+  return {static_cast<std::int64_t>(k), static_cast<std::int64_t>(m), static_cast<std::int64_t>(nl),
+          static_cast<std::int64_t>(nm)};
+}
+
 }  // namespace
 
 TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index,
@@ -87,7 +139,7 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
 }
 
 void TrajectoryWriter::write(const Frame& frame) {
-  XdmfSnapshot snapshot{next_index_, frame.time, {}};
+  XdmfSnapshot snapshot{next_index_, frame.time, {}, std::nullopt};
   {
     // The file existed since construction; losing it mid-run is a run failure, not bad input.
     h5::File file = [&] {
@@ -107,6 +159,7 @@ void TrajectoryWriter::write(const Frame& frame) {
     const h5::Shape grid(frame.grid_shape.begin(), frame.grid_shape.end());
     for (const SpeciesField& field : frame.compartment_species)
       file.write(group + "/compartments/species/" + field.name, field.copies, grid);
+    if (frame.filaments) snapshot.filaments = writeFilaments(file, group, *frame.filaments);
     file.flush();
   }  // the file closes here
   snapshots_.push_back(std::move(snapshot));

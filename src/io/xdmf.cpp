@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <iterator>
 
 namespace cortex {
@@ -47,6 +48,59 @@ void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const Xd
                  fmt::arg("data", data));
 }
 
+// A grid of 2-node line segments: `cells` (n,2) indexes the rows of `points` (k,3). For linkers
+// and motors, `points` is the (n,2,3) dataset of end positions read as (2n,3), which the
+// C-order layout makes the ends of segment i rows 2i and 2i+1.
+struct SegmentGrid {
+  const char* name;
+  std::int64_t segments, points;
+  std::string cells, positions;  // dataset paths
+  std::vector<std::array<std::string, 4>> cell_attributes;  // name, dataset, NumberType, Precision
+};
+
+void appendSegmentGrid(std::string& xml, const SegmentGrid& grid) {
+  const std::int64_t m = grid.segments;
+  fmt::format_to(std::back_inserter(xml),
+                 R"(        <Grid Name="{name}" GridType="Uniform">
+          <Topology TopologyType="Polyline" NodesPerElement="2" NumberOfElements="{m}">
+            <DataItem Format="HDF" NumberType="Int" Precision="4" Dimensions="{m} 2">{cells}</DataItem>
+          </Topology>
+          <Geometry GeometryType="XYZ">
+            <DataItem Format="HDF" NumberType="Float" Precision="8" Dimensions="{n} 3">{positions}</DataItem>
+          </Geometry>
+)",
+                 fmt::arg("name", grid.name), fmt::arg("m", m), fmt::arg("n", grid.points),
+                 fmt::arg("cells", grid.cells), fmt::arg("positions", grid.positions));
+  for (const auto& [name, dataset, type, precision] : grid.cell_attributes) {
+    fmt::format_to(std::back_inserter(xml),
+                   R"(          <Attribute Name="{}" AttributeType="Scalar" Center="Cell">
+            <DataItem Format="HDF" NumberType="{}" Precision="{}" Dimensions="{}">{}</DataItem>
+          </Attribute>
+)",
+                   name, type, precision, m, dataset);
+  }
+  xml += "        </Grid>\n";
+}
+
+void appendFilamentGrids(std::string& xml, const XdmfSnapshot& snapshot, const XdmfFilaments& f,
+                         const std::string& h5_name) {
+  const std::string data = escapeXml(fmt::format("{}:{}/filaments/", h5_name, snapshotGroup(snapshot.index)));
+  if (f.cylinders > 0) {
+    appendSegmentGrid(xml, {"filaments", f.cylinders, f.beads, data + "cylinders", data + "beads",
+                            {{"filament", data + "cylinder_filament", "Int", "4"}}});
+  }
+  if (f.linkers > 0) {
+    appendSegmentGrid(xml, {"linkers", f.linkers, 2 * f.linkers, data + "linker_cells", data + "linkers",
+                            {{"type", data + "linker_types", "Int", "4"},
+                             {"tension", data + "linker_tensions", "Float", "8"}}});
+  }
+  if (f.motors > 0) {
+    appendSegmentGrid(xml, {"motors", f.motors, 2 * f.motors, data + "motor_cells", data + "motors",
+                            {{"type", data + "motor_types", "Int", "4"},
+                             {"tension", data + "motor_tensions", "Float", "8"}}});
+  }
+}
+
 }  // namespace
 
 std::string snapshotGroup(std::int64_t index) { return fmt::format("/snapshots/{:06d}", index); }
@@ -68,6 +122,7 @@ std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots, const std
     for (const XdmfMembrane& membrane : snapshot.membranes) {
       appendMembraneGrid(xml, snapshot, membrane, h5_name);
     }
+    if (snapshot.filaments) appendFilamentGrids(xml, snapshot, *snapshot.filaments, h5_name);
     xml += "      </Grid>\n";
   }
   xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";

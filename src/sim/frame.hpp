@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,27 @@ struct MembraneFrame {
   std::vector<double> vertices;        // n*3, row-major (x0,y0,z0,x1,...), nm
   std::vector<std::int32_t> triangles; // m*3 vertex indices, counter-clockwise seen from outside
   std::vector<double> mean_curvature;  // n, 1/nm
+};
+
+// The cytoskeleton, flattened. Filament i (its index, an identity for the whole run) owns
+// beads offsets[i]..offsets[i+1]-1; a cylinder is a pair of consecutive bead indices.
+// Linkers and motors are given by the positions of their two bound ends.
+struct FilamentFrame {
+  std::vector<double> beads;                   // k*3, nm
+  std::vector<std::int64_t> offsets{0};        // f+1
+  std::vector<std::int64_t> ids;               // f
+  std::vector<std::int32_t> types;             // f, filament type index
+  std::vector<double> lengths;                 // f, nm
+  std::vector<std::int64_t> monomers;          // f
+  std::vector<std::int32_t> cylinders;         // m*2 bead indices
+  std::vector<std::int32_t> cylinder_filament; // m, filament id of each cylinder
+  std::vector<double> linkers;                 // n*6: end 0 (x,y,z), end 1 (x,y,z), nm
+  std::vector<std::int32_t> linker_types;      // n
+  std::vector<double> linker_tensions;         // n, pN
+  std::vector<double> motors;                  // n*6
+  std::vector<std::int32_t> motor_types;       // n
+  std::vector<double> motor_tensions;          // n, pN
+  std::vector<double> branch_points;           // b*3, nm: each daughter's first bead
 };
 
 // Copies of one 3D species per compartment, laid out as an (nx, ny, nz) C-order array.
@@ -28,6 +50,7 @@ struct Frame {
   std::vector<MembraneFrame> membranes;
   std::array<std::int64_t, 3> grid_shape{0, 0, 0};
   std::vector<SpeciesField> compartment_species;
+  std::optional<FilamentFrame> filaments;  // set when the run has a filament network
 };
 
 // The loop in sim/ calls write() at every snapshot; implementations live in io/.

@@ -3,6 +3,43 @@
 #include "membrane/curvature.hpp"
 
 namespace cortex {
+namespace {
+
+void appendPoint(std::vector<double>& out, const Vec3& p) { out.insert(out.end(), {p.x(), p.y(), p.z()}); }
+
+void appendBindings(const FilamentNetwork& net, BinderKind kind, std::vector<double>& ends,
+                    std::vector<std::int32_t>& types, std::vector<double>& tensions) {
+  for (const Binding& b : net.bound(kind)) {
+    for (int e = 0; e < 2; ++e) appendPoint(ends, net.sitePosition(kind, b.type, b.filament[e], b.site[e]));
+    types.push_back(static_cast<std::int32_t>(b.type));
+    tensions.push_back(b.tension);
+  }
+}
+
+FilamentFrame filamentFrame(const FilamentNetwork& net) {
+  FilamentFrame ff;
+  const auto& filaments = net.filaments();
+  for (std::size_t i = 0; i < filaments.size(); ++i) {
+    const Filament& f = filaments[i];
+    const auto first = static_cast<std::int32_t>(ff.offsets.back());
+    for (const Vec3& p : f.beads) appendPoint(ff.beads, p);
+    for (Index c = 0; c < f.numCylinders(); ++c) {
+      ff.cylinders.insert(ff.cylinders.end(), {first + c, first + c + 1});
+      ff.cylinder_filament.push_back(static_cast<std::int32_t>(i));
+    }
+    ff.offsets.push_back(ff.offsets.back() + static_cast<std::int64_t>(f.beads.size()));
+    ff.ids.push_back(static_cast<std::int64_t>(i));
+    ff.types.push_back(static_cast<std::int32_t>(f.type));
+    ff.lengths.push_back(f.length());
+    ff.monomers.push_back(f.monomers());
+  }
+  appendBindings(net, BinderKind::kLinker, ff.linkers, ff.linker_types, ff.linker_tensions);
+  appendBindings(net, BinderKind::kMotor, ff.motors, ff.motor_types, ff.motor_tensions);
+  for (const Branch& b : net.branches()) appendPoint(ff.branch_points, filaments[b.daughter].beads.front());
+  return ff;
+}
+
+}  // namespace
 
 Frame makeFrame(const System& system) {
   Frame frame;
@@ -29,6 +66,7 @@ Frame makeFrame(const System& system) {
       frame.compartment_species.push_back(std::move(field));
     }
   }
+  if (const FilamentNetwork* net = system.filaments()) frame.filaments = filamentFrame(*net);
   return frame;
 }
 
