@@ -92,6 +92,8 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   }
   // The engine starts every rate factor at 1.
   factor_.assign(channels_.size() * static_cast<std::size_t>(grid_.count()), 1.0);
+  pending_.assign(factor_.size(), 0.0);
+  is_dirty_.assign(factor_.size(), 0);
   candidates_.assign(channels_.size(), Candidates{std::vector<Index>(grid_.count() + 1, 0), {}});
 }
 
@@ -121,7 +123,8 @@ void FilamentChemistry::updateMechanochemistry(ChemistryEngine& engine) {
   computeLoads();
   computeTensions();
   findCandidates();
-  syncFactors(engine);
+  rebuildFactors();
+  flush(engine);
 }
 
 void FilamentChemistry::computeLoads() {
@@ -154,7 +157,9 @@ void FilamentChemistry::computeTensions() {
                         net_.sitePosition(kind, b.type, b.filament[0], b.site[0]))
                            .norm();
       b.tension = k * (l - b.rest_length);
+      b.compartment = compartmentOf(bindingMidpoint(kind, b));
     }
+  for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
 
 void FilamentChemistry::findCandidates() {
@@ -178,7 +183,8 @@ void FilamentChemistry::findCandidates() {
         for (Index cyl = 0; cyl < fils[f].numCylinders(); ++cyl) {
           const auto [first, last] = net_.sitesOnCylinder(BinderKind::kBrancher, c.type, f, cyl);
           for (std::int64_t s = first; s <= last; ++s)
-            sites.push_back({compartmentOf(net_.sitePosition(BinderKind::kBrancher, c.type, f, s)), {{f, f}, {s, s}}});
+            sites.push_back({compartmentOf(net_.sitePosition(BinderKind::kBrancher, c.type, f, s)),
+                             {{f, f}, {static_cast<std::int32_t>(s), static_cast<std::int32_t>(s)}}});
         }
       }
       Candidates& out = candidates_[ch];
@@ -192,70 +198,60 @@ void FilamentChemistry::findCandidates() {
   }
 }
 
-// Site pairs on cylinders of different filaments at a distance in [rmin, rmax], found
-// through a cell list of cylinder midpoints and grouped by the compartment of the
-// pair's midpoint. Only sites whose index is a multiple of `every` may bind.
+// Site pairs on different filaments at a distance in [rmin, rmax], found through a cell
+// list of the sites (cells of edge rmax, sorted by cell key) and grouped by the
+// compartment of the pair's midpoint. Only sites whose index is a multiple of `every`
+// may bind.
 FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index type, double rmin, double rmax,
                                                           int every) const {
-  const auto& fils = net_.filaments();
-  struct Cyl {
-    Index f, c;
-    Vec3 mid;
-    double half;
+  struct Site {
+    std::uint64_t cell;
+    Index filament;
+    std::int32_t site;
+    Vec3 x;
   };
-  std::vector<Cyl> cyls;
-  double max_half = 0.0;
-  for (Index f = 0; f < static_cast<Index>(fils.size()); ++f)
-    for (Index c = 0; c < fils[f].numCylinders(); ++c) {
-      const Vec3 &a = fils[f].beads[c], &b = fils[f].beads[c + 1];
-      cyls.push_back({f, c, 0.5 * (a + b), 0.5 * (b - a).norm()});
-      max_half = std::max(max_half, cyls.back().half);
-    }
-  const double cell = rmax + 2.0 * max_half;
+  const double inv = 1.0 / rmax;
   auto cellOf = [&](const Vec3& x) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(x.x() / cell)),
-                                       static_cast<std::int64_t>(std::floor(x.y() / cell)),
-                                       static_cast<std::int64_t>(std::floor(x.z() / cell))};
+    // 21 bits per axis, offset so that negative coordinates stay ordered.
+    auto axis = [&](double v) { return static_cast<std::uint64_t>(std::floor(v * inv) + (1 << 20)) & 0x1FFFFF; };
+    return axis(x.x()) << 42 | axis(x.y()) << 21 | axis(x.z());
   };
-  auto hash = [](std::int64_t i, std::int64_t j, std::int64_t k) {
-    return static_cast<std::uint64_t>((i * 73856093) ^ (j * 19349663) ^ (k * 83492791));
-  };
-  std::unordered_map<std::uint64_t, std::vector<Index>> cells;
-  for (Index i = 0; i < static_cast<Index>(cyls.size()); ++i) {
-    const auto ijk = cellOf(cyls[i].mid);
-    cells[hash(ijk[0], ijk[1], ijk[2])].push_back(i);
-  }
-  std::vector<std::pair<Index, Candidate>> found;
-  std::vector<Index> near;
-  for (Index i = 0; i < static_cast<Index>(cyls.size()); ++i) {
-    const auto ijk = cellOf(cyls[i].mid);
-    near.clear();
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find(hash(ijk[0] + dx, ijk[1] + dy, ijk[2] + dz));
-          if (it == cells.end()) continue;
-          for (Index j : it->second)
-            if (j > i && cyls[j].f != cyls[i].f) near.push_back(j);
-        }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());  // hash collisions
-    for (Index j : near) {
-      const Cyl &a = cyls[i], &b = cyls[j];
-      if ((a.mid - b.mid).norm() > rmax + a.half + b.half) continue;
-      const auto [a0, a1] = net_.sitesOnCylinder(kind, type, a.f, a.c);
-      const auto [b0, b1] = net_.sitesOnCylinder(kind, type, b.f, b.c);
-      for (std::int64_t sa = a0; sa <= a1; ++sa) {
-        if (sa % every != 0) continue;
-        const Vec3 pa = net_.sitePosition(kind, type, a.f, sa);
-        for (std::int64_t sb = b0; sb <= b1; ++sb) {
-          if (sb % every != 0) continue;
-          const Vec3 pb = net_.sitePosition(kind, type, b.f, sb);
-          const double d = (pb - pa).norm();
-          if (d >= rmin && d <= rmax) found.push_back({compartmentOf(0.5 * (pa + pb)), {{a.f, b.f}, {sa, sb}}});
-        }
+  std::vector<Site> sites;
+  const auto& fils = net_.filaments();
+  const double sp = net_.spacing(kind, type);
+  for (Index f = 0; f < static_cast<Index>(fils.size()); ++f) {
+    const Filament& fil = fils[f];
+    for (Index c = 0; c < fil.numCylinders(); ++c) {
+      const auto [first, last] = net_.sitesOnCylinder(kind, type, f, c);
+      const double lo = static_cast<double>(fil.lattice[c]), span = static_cast<double>(fil.lattice[c + 1]) - lo;
+      for (std::int64_t j = first; j <= last; ++j) {
+        if (j % every != 0) continue;
+        const double w = ((static_cast<double>(j) + 0.5) * sp - lo) / span;
+        const Vec3 x = (1.0 - w) * fil.beads[c] + w * fil.beads[c + 1];
+        sites.push_back({cellOf(x), f, static_cast<std::int32_t>(j), x});
       }
     }
+  }
+  std::stable_sort(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.cell < b.cell; });
+  std::vector<std::pair<Index, Candidate>> found;
+  const double rmin2 = rmin * rmin, rmax2 = rmax * rmax;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const Site& a = sites[i];
+    const std::uint64_t ci = a.cell >> 42, cj = a.cell >> 21 & 0x1FFFFF, ck = a.cell & 0x1FFFFF;
+    for (std::uint64_t di = 0; di < 3; ++di)
+      for (std::uint64_t dj = 0; dj < 3; ++dj)
+        for (std::uint64_t dk = 0; dk < 3; ++dk) {
+          const std::uint64_t key = (ci + di - 1) << 42 | (cj + dj - 1) << 21 | (ck + dk - 1);
+          auto lo = std::lower_bound(sites.begin(), sites.end(), key,
+                                     [](const Site& s, std::uint64_t k) { return s.cell < k; });
+          for (; lo != sites.end() && lo->cell == key; ++lo) {
+            const auto j = static_cast<std::size_t>(lo - sites.begin());
+            if (j <= i || lo->filament == a.filament) continue;  // each pair once, never on one filament
+            const double d2 = (lo->x - a.x).squaredNorm();
+            if (d2 < rmin2 || d2 > rmax2) continue;
+            found.push_back({compartmentOf(0.5 * (a.x + lo->x)), {{a.filament, lo->filament}, {a.site, lo->site}}});
+          }
+        }
   }
   Candidates out;
   out.start.assign(grid_.count() + 1, 0);
@@ -274,52 +270,80 @@ Vec3 FilamentChemistry::bindingMidpoint(BinderKind kind, const Binding& b) const
                 net_.sitePosition(kind, b.type, b.filament[1], b.site[1]));
 }
 
-void FilamentChemistry::syncFactors(ChemistryEngine& engine) {
+void FilamentChemistry::contribute(FilamentReaction kind, Index type, Index c, double w) {
+  const Index ch = channelOf(kind, type);
+  if (ch < 0) return;
+  const std::size_t i = static_cast<std::size_t>(ch) * grid_.count() + c;
+  pending_[i] += w;
+  if (!is_dirty_[i]) {
+    is_dirty_[i] = 1;
+    dirty_.push_back(i);
+  }
+}
+
+void FilamentChemistry::contributeEnds(Index i, double sign) {
   using K = FilamentReaction;
+  const Filament& f = net_.filaments()[i];
+  if (ratchet_.size() <= static_cast<std::size_t>(i)) {
+    ratchet_.resize(i + 1, {1.0, 1.0});  // a new filament: unloaded until the next minimization
+    load_.resize(i + 1, {0.0, 0.0});
+  }
+  const Index plus = compartmentOf(f.beads.back());
+  contribute(K::kPlusGrow, f.type, plus, sign * ratchet_[i][1]);
+  contribute(K::kPlusShrink, f.type, plus, sign);
+  if (!f.minusEndActive()) return;
+  const Index minus = compartmentOf(f.beads.front());
+  contribute(K::kMinusGrow, f.type, minus, sign * ratchet_[i][0]);
+  contribute(K::kMinusShrink, f.type, minus, sign);
+}
+
+void FilamentChemistry::contributeBinding(BinderKind kind, const Binding& b, double sign) {
+  using K = FilamentReaction;
+  if (kind == BinderKind::kLinker) {
+    contribute(K::kLinkerUnbind, b.type, b.compartment, sign * slipFactor(net_.config().linkers[b.type], b.tension));
+    return;
+  }
+  const MotorType& m = net_.config().motors[b.type];
+  contribute(K::kMotorUnbind, b.type, b.compartment, sign * catchFactor(m, b.tension));
+  contribute(K::kMotorWalk, b.type, b.compartment, sign * 2.0 * walkFactor(m, b.tension));
+}
+
+void FilamentChemistry::contributeBranch(const Branch& b, double sign) {
+  contribute(FilamentReaction::kUnbranch, b.type, b.compartment, sign);
+}
+
+void FilamentChemistry::rebuildFactors() {
   const Index C = grid_.count();
-  const auto& fils = net_.filaments();
-  if (ratchet_.size() < fils.size()) {
-    ratchet_.resize(fils.size(), {1.0, 1.0});
-    load_.resize(fils.size(), {0.0, 0.0});
-  }
-  std::vector<double> next(factor_.size(), 0.0);
-  auto add = [&](K kind, Index type, Index c, double w) {
-    const Index ch = channelOf(kind, type);
-    if (ch >= 0) next[static_cast<std::size_t>(ch) * C + c] += w;
-  };
-  for (std::size_t i = 0; i < fils.size(); ++i) {
-    const Filament& f = fils[i];
-    const Index plus = compartmentOf(f.beads.back());
-    add(K::kPlusGrow, f.type, plus, ratchet_[i][1]);
-    add(K::kPlusShrink, f.type, plus, 1.0);
-    if (!f.minusEndActive()) continue;
-    const Index minus = compartmentOf(f.beads.front());
-    add(K::kMinusGrow, f.type, minus, ratchet_[i][0]);
-    add(K::kMinusShrink, f.type, minus, 1.0);
-  }
-  for (const Binding& b : net_.linkers())
-    add(K::kLinkerUnbind, b.type, compartmentOf(bindingMidpoint(BinderKind::kLinker, b)),
-        slipFactor(net_.config().linkers[b.type], b.tension));
-  for (const Binding& b : net_.motors()) {
-    const Index c = compartmentOf(bindingMidpoint(BinderKind::kMotor, b));
-    const MotorType& m = net_.config().motors[b.type];
-    add(K::kMotorUnbind, b.type, c, catchFactor(m, b.tension));
-    add(K::kMotorWalk, b.type, c, 2.0 * walkFactor(m, b.tension));
-  }
-  for (const Branch& b : net_.branches()) add(K::kUnbranch, b.type, compartmentOf(fils[b.daughter].beads.front()), 1.0);
+  std::fill(pending_.begin(), pending_.end(), 0.0);
+  for (Index i = 0; i < static_cast<Index>(net_.filaments().size()); ++i) contributeEnds(i, 1.0);
+  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor})
+    for (const Binding& b : net_.bound(kind)) contributeBinding(kind, b, 1.0);
+  for (const Branch& b : net_.branches()) contributeBranch(b, 1.0);
   for (std::size_t ch = 0; ch < channels_.size(); ++ch) {
-    if (channels_[ch].kind == K::kNucleate)
-      for (Index c = 0; c < C; ++c) next[ch * C + c] = 1.0;
+    if (channels_[ch].kind == FilamentReaction::kNucleate)
+      for (Index c = 0; c < C; ++c) pending_[ch * C + c] = 1.0;
     else if (isBinding(channels_[ch].kind))
-      for (Index c = 0; c < C; ++c) next[ch * C + c] = candidates_[ch].count(c);
+      for (Index c = 0; c < C; ++c) pending_[ch * C + c] = candidates_[ch].count(c);
   }
-  for (std::size_t ch = 0; ch < channels_.size(); ++ch)
-    for (Index c = 0; c < C; ++c) {
-      const std::size_t i = ch * C + c;
-      if (next[i] == factor_[i]) continue;
-      factor_[i] = next[i];
-      engine.setRateFactor(channels_[ch].reaction, c, next[i]);
-    }
+  dirty_.clear();
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    is_dirty_[i] = 1;
+    dirty_.push_back(i);
+  }
+}
+
+void FilamentChemistry::flush(ChemistryEngine& engine) {
+  const Index C = grid_.count();
+  for (const std::size_t i : dirty_) {
+    is_dirty_[i] = 0;
+    // Sums of +-contributions may leave rounding dust where nothing is left: a factor
+    // without an object behind it only fires void events (thinning), but never < 0.
+    const double f = std::max(0.0, pending_[i]);
+    if (f == factor_[i]) continue;
+    factor_[i] = f;
+    engine.setRateFactor(channels_[i / C].reaction, static_cast<Index>(i % C), f);
+  }
+  dirty_.clear();
 }
 
 // --- events ------------------------------------------------------------------------------
@@ -358,7 +382,7 @@ bool FilamentChemistry::fired(Index reaction, Index compartment, ChemistryEngine
       done = fireUnbranch(*it, compartment, random);
       break;
   }
-  if (done) syncFactors(engine);
+  flush(engine);
   return done;
 }
 
@@ -397,12 +421,22 @@ bool FilamentChemistry::fireEnd(const Channel& ch, Index c, ChemistryEngine& eng
       random);
   if (f < 0) return false;
   if (grow) {
+    contributeEnds(f, -1.0);
     net_.grow(f, plus);
+    contributeEnds(f, 1.0);
     return true;
   }
+  if (fils[f].monomers() <= net_.minimumMonomers(fils[f])) return false;  // at its smallest: nothing to lose
+  contributeEnds(f, -1.0);
   released_.clear();
-  if (!net_.shrink(f, plus, released_)) return false;  // at its smallest: nothing to lose
-  release(released_, engine);
+  net_.shrink(f, plus, released_);
+  if (released_.empty()) {
+    contributeEnds(f, 1.0);
+  } else {
+    // Proteins came off (rare): recount everything rather than track each one.
+    release(released_, engine);
+    rebuildFactors();
+  }
   return true;
 }
 
@@ -431,7 +465,7 @@ bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream&
   // Nucleation happens only inside the boundary: thinning by the fraction of the
   // compartment that lies inside.
   if (!insideBoundary(f.beads.front()) || !insideBoundary(f.beads.back())) return false;
-  net_.addFilament(std::move(f));
+  contributeEnds(net_.addFilament(std::move(f)), 1.0);
   return true;
 }
 
@@ -451,11 +485,13 @@ bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& rando
   Binding b;
   b.type = ch.type;
   b.filament = p.filament;
-  b.site = p.site;
+  b.site = {p.site[0], p.site[1]};
   b.rest_length = (net_.sitePosition(kind, ch.type, p.filament[1], p.site[1]) -
                    net_.sitePosition(kind, ch.type, p.filament[0], p.site[0]))
                       .norm();
+  b.compartment = c;
   net_.bind(kind, b);
+  contributeBinding(kind, b, 1.0);
   return true;
 }
 
@@ -466,12 +502,13 @@ bool FilamentChemistry::fireUnbind(const Channel& ch, Index c, RandomStream& ran
       static_cast<Index>(bound.size()),
       [&](Index k) {
         const Binding& b = bound[k];
-        if (b.type != ch.type || compartmentOf(bindingMidpoint(kind, b)) != c) return 0.0;
+        if (b.type != ch.type || b.compartment != c) return 0.0;
         return kind == BinderKind::kLinker ? slipFactor(net_.config().linkers[b.type], b.tension)
                                            : catchFactor(net_.config().motors[b.type], b.tension);
       },
       random);
   if (i < 0) return false;
+  contributeBinding(kind, bound[i], -1.0);
   net_.unbind(kind, static_cast<std::size_t>(i));
   return true;
 }
@@ -483,7 +520,7 @@ bool FilamentChemistry::fireWalk(const Channel& ch, Index c, RandomStream& rando
       static_cast<Index>(2 * motors.size()),
       [&](Index k) {
         const Binding& b = motors[k / 2];
-        if (b.type != ch.type || compartmentOf(bindingMidpoint(BinderKind::kMotor, b)) != c) return 0.0;
+        if (b.type != ch.type || b.compartment != c) return 0.0;
         return walkFactor(net_.config().motors[b.type], b.tension);
       },
       random);
@@ -507,7 +544,10 @@ bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& ran
   Vec3 v = randomDirection(random);
   v = (v - v.dot(u) * u).normalized();
   const double angle = net_.config().branchers[ch.type].angle * constants::kPi / 180.0;
-  net_.branch(ch.type, mother, site.site[0], std::cos(angle) * u + std::sin(angle) * v);
+  const Index daughter = net_.branch(ch.type, mother, site.site[0], std::cos(angle) * u + std::sin(angle) * v);
+  net_.branches().back().compartment = c;
+  contributeEnds(daughter, 1.0);
+  contributeBranch(net_.branches().back(), 1.0);
   return true;
 }
 
@@ -517,11 +557,15 @@ bool FilamentChemistry::fireUnbranch(const Channel& ch, Index c, RandomStream& r
       static_cast<Index>(branches.size()),
       [&](Index k) {
         const Branch& b = branches[k];
-        return b.type == ch.type && compartmentOf(net_.filaments()[b.daughter].beads.front()) == c ? 1.0 : 0.0;
+        return b.type == ch.type && b.compartment == c ? 1.0 : 0.0;
       },
       random);
   if (i < 0) return false;
+  const Index daughter = branches[i].daughter;
+  contributeEnds(daughter, -1.0);  // its minus end comes free
+  contributeBranch(branches[i], -1.0);
   net_.unbranch(static_cast<std::size_t>(i));
+  contributeEnds(daughter, 1.0);
   return true;
 }
 

@@ -59,7 +59,7 @@ class FilamentChemistry final : public ReactionHook {
   // Candidate pairs (or branching sites) of one binding channel, grouped by compartment.
   struct Candidate {
     std::array<Index, 2> filament;
-    std::array<std::int64_t, 2> site;
+    std::array<std::int32_t, 2> site;
   };
   struct Candidates {
     std::vector<Index> start;  // per compartment, into list; size C + 1
@@ -74,8 +74,16 @@ class FilamentChemistry final : public ReactionHook {
   void computeTensions();
   void findCandidates();
   Candidates pairsFor(BinderKind kind, Index type, double rmin, double rmax, int every) const;
-  // Recomputes every factor and passes the changed ones to the engine.
-  void syncFactors(ChemistryEngine& engine);
+  // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the
+  // network changes inside a window; flush() passes the entries that changed to the
+  // engine. rebuildFactors() recomputes all of them from scratch (after a minimization,
+  // and after rare events that touch many things), which also clears rounding drift.
+  void contribute(FilamentReaction kind, Index type, Index c, double w);
+  void contributeEnds(Index f, double sign);
+  void contributeBinding(BinderKind kind, const Binding& b, double sign);
+  void contributeBranch(const Branch& b, double sign);
+  void rebuildFactors();
+  void flush(ChemistryEngine& engine);
   // The event, on the object picked with its weight among those in compartment c.
   bool fireEnd(const Channel& ch, Index c, ChemistryEngine& engine, RandomStream& random);
   bool fireNucleation(const Channel& ch, Index c, RandomStream& random);
@@ -94,6 +102,9 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<Channel> channels_;
   std::array<std::vector<Index>, kFilamentReactionKinds> lookup_;  // [kind][type] -> channel or -1
   std::vector<double> factor_;                                       // [channel * C + c], as set in the engine
+  std::vector<double> pending_;                                      // the same, as the network now is
+  std::vector<std::size_t> dirty_;                                   // entries of pending_ changed since flush
+  std::vector<char> is_dirty_;
   std::vector<Candidates> candidates_;                               // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
   std::vector<Release> released_;                                    // scratch

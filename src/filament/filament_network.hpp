@@ -29,12 +29,15 @@ struct Binding {
   std::array<std::int64_t, 2> site{0, 0};
   double rest_length = 0.0;            // nm: the distance at binding
   double tension = 0.0;                // pN, k (l - l0) at the last minimization; 0 until then
+  Index compartment = 0;               // where its reactions fire: fixed at binding and at each
+                                       // minimization (chemistry's bookkeeping, not state)
 };
 
 struct Branch {
   Index type = 0;          // BrancherType index
   Index mother = 0, daughter = 0;
   std::int64_t site = 0;   // brancher site on the mother
+  Index compartment = 0;   // as Binding::compartment
 };
 
 // A protein set free when an end shrinks past it: one copy of `species` goes back to the
@@ -55,6 +58,7 @@ class FilamentNetwork {
   const std::vector<Binding>& linkers() const { return linkers_; }
   const std::vector<Binding>& motors() const { return motors_; }
   const std::vector<Branch>& branches() const { return branches_; }
+  std::vector<Branch>& branches() { return branches_; }
   std::vector<Binding>& bound(BinderKind kind) { return kind == BinderKind::kMotor ? motors_ : linkers_; }
   const std::vector<Binding>& bound(BinderKind kind) const { return kind == BinderKind::kMotor ? motors_ : linkers_; }
 

@@ -124,7 +124,7 @@ TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
 }
 
 TEST(Xdmf, EscapesNamesAndHandlesNoSnapshots) {
-  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}}}, "t.h5");
+  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}, std::nullopt}}, "t.h5");
   EXPECT_NE(xml.find("Name=\"a&amp;b\""), std::string::npos);
   EXPECT_NE(xml.find(">t.h5:/snapshots/000007/membranes/a&amp;b/mean_curvature<"),
             std::string::npos);
