@@ -31,7 +31,7 @@ bool isBinding(FilamentReaction k) {
 }  // namespace
 
 FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT)
-    : net_(network), grid_(model.grid), kT_(kT) {
+    : net_(network), exclusion_(network.layout(), network.config().types), grid_(model.grid), kT_(kT) {
   const auto species = static_cast<Index>(model.species.size());
   auto check = [&](Index s, const std::string& what) {
     if (s < 0 || s >= species) throw InputError(fmt::format("{}: its species is not a [[species]]", what));
@@ -87,7 +87,10 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   }
   for (Index i = 0; i < static_cast<Index>(cfg.branchers.size()); ++i) {
     const BrancherType& b = cfg.branchers[i];
-    add(K::kBranch, i, b.name + " branching", {{b.species_index, 1}}, {}, b.rate / nv);
+    // The daughter's first monomer is an actin from the pool (MEDYAN's branching reaction
+    // consumes the complex and one monomer), so actin is conserved through unbranching.
+    const Index monomer = cfg.types[b.filament_type_index].monomer_species_index;
+    add(K::kBranch, i, b.name + " branching", {{b.species_index, 1}, {monomer, 1}}, {}, b.rate / nv);
     add(K::kUnbranch, i, b.name + " unbranching", {}, {{b.species_index, 1}}, b.unbranch_rate / nv);
   }
   // The engine starts every rate factor at 1.
@@ -131,17 +134,33 @@ void FilamentChemistry::computeLoads() {
   const auto& fils = net_.filaments();
   ratchet_.assign(fils.size(), {1.0, 1.0});
   load_.assign(fils.size(), {0.0, 0.0});
+  // Forces on the end beads from the walls and from other filaments' cylinders (excluded
+  // volume), as the last minimization left them; the layout is that minimization's.
+  const FilamentLayout& layout = net_.layout();
+  const bool laid_out = layout.num_beads == net_.numBeads() && layout.cylinders.size() > 1;
+  if (laid_out) {
+    const std::size_t n = 3 * static_cast<std::size_t>(layout.bead_offset + layout.num_beads);
+    x_.assign(n, 0.0);
+    gradient_.assign(n, 0.0);
+    net_.gather(x_.data());
+    exclusion_.evaluate({x_.data(), gradient_.data(), 0});
+  }
   const auto& boundary = net_.config().boundary;
-  if (!boundary) return;
   for (std::size_t i = 0; i < fils.size(); ++i) {
     const Filament& f = fils[i];
     const double delta = net_.type(f.type).monomer_size;
     for (int e = 0; e < 2; ++e) {
       const Vec3& tip = e ? f.beads.back() : f.beads.front();
       const Vec3 u = e ? f.plusDirection() : f.minusDirection();
+      Vec3 force = boundary ? boundaryForce(*boundary, tip) : Vec3::Zero();
+      if (laid_out) {
+        const Index bead = layout.bead_offset + net_.firstBead(static_cast<Index>(i)) +
+                           (e ? static_cast<Index>(f.beads.size()) - 1 : 0);
+        force -= Eigen::Map<const Vec3>(&gradient_[3 * static_cast<std::size_t>(bead)]);
+      }
       // Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
       // exp(-f delta / kT); a pulling force does not speed it beyond free growth.
-      const double load = std::max(0.0, -boundaryForce(*boundary, tip).dot(u));
+      const double load = std::max(0.0, -force.dot(u));
       load_[i][e] = load;
       ratchet_[i][e] = std::exp(-load * delta / kT_);
     }

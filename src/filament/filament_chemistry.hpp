@@ -15,6 +15,7 @@
 
 #include "chem/chemistry_engine.hpp"
 #include "chem/reaction_hook.hpp"
+#include "filament/excluded_volume_energy.hpp"
 #include "filament/filament_network.hpp"
 
 namespace cortex {
@@ -96,6 +97,8 @@ class FilamentChemistry final : public ReactionHook {
   bool insideBoundary(const Vec3& x) const;
 
   FilamentNetwork& net_;
+  CylinderExclusionEnergy exclusion_;  // its forces on the ends load the ratchet
+  std::vector<double> x_, gradient_;   // scratch for them
   CompartmentGrid grid_;
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none

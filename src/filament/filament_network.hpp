@@ -96,7 +96,7 @@ class FilamentNetwork {
   // Moves end `end` of motor `index` one site towards the plus end; false if that site
   // does not exist or is occupied.
   bool walk(std::size_t index, int end);
-  // A daughter of one monomer (the Arp2/3 complex) on `site` of `mother`, leaving at the
+  // A daughter of one monomer, capped by the Arp2/3 complex, on `site` of `mother`, leaving at the
   // brancher's angle in direction `daughter_direction` (unit). Returns the daughter.
   Index branch(Index type, Index mother, std::int64_t site, const Vec3& daughter_direction);
   void unbranch(std::size_t index);

@@ -85,16 +85,16 @@ struct MotorType {
                                 // then moves it step by step between them)
 };
 
-// Arp2/3: a diffusing complex that, bound to a site on a filament, nucleates a daughter
-// filament at `angle` to its mother, the complex itself being the daughter's first
-// monomer (so the daughter never depolymerizes below it).
+// Arp2/3: a diffusing complex that, with one monomer from the pool, binds a site on a
+// filament and nucleates there a one-monomer daughter filament at `angle` to its mother;
+// the complex caps the daughter's minus end until it unbranches.
 struct BrancherType {
   std::string name;
   std::string species;
   Index species_index = -1;
   std::string filament_type;    // type of mothers and daughters
   Index filament_type_index = 0;
-  double rate = 0.0;            // 1/(µM·s) per available site
+  double rate = 0.0;            // 1/(µM²·s) per available site: k [Arp2/3] [monomer]
   double unbranch_rate = 0.0;   // 1/s: the daughter detaches, the complex is released
   double angle = 70.0;          // degrees between mother and daughter
   double angle_stiffness = 100.0;     // pN·nm, E = K (cos theta - cos theta0)^2

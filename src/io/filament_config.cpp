@@ -201,7 +201,10 @@ BrancherType readBrancher(const ConfigReader& r, const std::vector<FilamentType>
   BrancherType b;
   readIdentity(r, b, species);
   b.filament_type_index = typeIndex(r, "filament_type", types, b.filament_type);
-  b.rate = r.number("rate", b.rate, Range::nonNegative(), "1/(µM·s)");
+  b.rate = r.number("rate", b.rate, Range::nonNegative(), "1/(µM²·s)");
+  if (b.rate > 0 && types[b.filament_type_index].monomer_species_index < 0)
+    r.fail("filament_type", fmt::format("\"{}\" has no monomer_species: a branch's first monomer comes from it",
+                                        types[b.filament_type_index].name));
   b.unbranch_rate = r.number("unbranch_rate", b.unbranch_rate, Range::nonNegative(), "1/s");
   b.angle = r.number("angle", b.angle, Range{0.0, 180.0, true, true}, "degrees");
   b.angle_stiffness = r.number("angle_stiffness", b.angle_stiffness, Range::nonNegative(), "pN·nm");

@@ -30,11 +30,9 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
   std::unique_ptr<FilamentChemistry> filament_chemistry;
   if (config.filaments) {
     if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
-    Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();
-    if (chemistry) {
-      const CompartmentGrid& g = chemistry->model.grid;
-      box_max = Vec3(g.shape[0], g.shape[1], g.shape[2]) * g.size;
-    }
+    // Without chemistry the grid is the default one (no [compartments] without species).
+    const CompartmentGrid g = chemistry ? chemistry->model.grid : CompartmentGrid{};
+    const Vec3 box_min = Vec3::Zero(), box_max = Vec3(g.shape[0], g.shape[1], g.shape[2]) * g.size;
     auto network = buildFilamentNetwork(*config.filaments, box_min, box_max, seed,
                                         restored ? &*restored->filaments : nullptr);
     if (chemistry) {

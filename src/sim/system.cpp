@@ -42,7 +42,7 @@ void System::setFilaments(std::unique_ptr<FilamentNetwork> network) {
   const FilamentConfig& config = filaments_->config();
   force_field_.add(std::make_unique<FilamentStretchingEnergy>(layout, config.types));
   force_field_.add(std::make_unique<FilamentBendingEnergy>(layout, config.types));
-  force_field_.add(std::make_unique<CylinderExclusionEnergy>(layout, config.types));
+  force_field_.add(std::make_unique<CylinderExclusionEnergy>(layout, config.types, 40.0));
   if (config.boundary) force_field_.add(std::make_unique<BoundaryRepulsionEnergy>(layout, *config.boundary));
   if (!config.linkers.empty()) force_field_.add(std::make_unique<SpringEnergy>(layout, layout.linkers, "linkers"));
   if (!config.motors.empty()) force_field_.add(std::make_unique<SpringEnergy>(layout, layout.motors, "motors"));

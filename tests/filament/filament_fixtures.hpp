@@ -38,6 +38,7 @@ struct Rig {
     model.species = std::move(species);
     network = std::make_unique<FilamentNetwork>(std::move(config));
     build(*network);
+    network->layOut(0);
     chemistry = std::make_unique<FilamentChemistry>(*network, model, kT);
     chemistry->addReactions(model);
     std::vector<int> all(static_cast<std::size_t>(model.grid.count()) * model.species.size(), 0);

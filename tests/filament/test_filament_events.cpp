@@ -1,0 +1,184 @@
+// The individual filament events and force laws: what each reaction does to the network,
+// the conservation laws it keeps, and the loads that feed back into rates.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../chem/chem_statistics.hpp"
+#include "filament_fixtures.hpp"
+
+namespace cortex {
+namespace {
+
+using filtest::Rig;
+
+FilamentType inertActin() {
+  FilamentType t = filtest::actin();
+  t.plus_on = t.plus_off = t.minus_on = t.minus_off = 0.0;
+  return t;
+}
+
+TEST(FilamentForceLaws, SlipCatchAndHillFollowTheirFormulas) {
+  FilamentNetwork net({});
+  ChemistryModel model;
+  FilamentChemistry chem(net, model, filtest::kT);
+  LinkerType l;
+  l.slip_length = 0.24;
+  EXPECT_NEAR(chem.slipFactor(l, 10.0), std::exp(10.0 * 0.24 / filtest::kT), 1e-12);
+  EXPECT_NEAR(chem.slipFactor(l, -10.0), chem.slipFactor(l, 10.0), 1e-12);  // any load speeds unbinding
+  MotorType m;
+  EXPECT_NEAR(FilamentChemistry::catchFactor(m, 12.62), std::exp(-1.0), 1e-12);
+  EXPECT_EQ(FilamentChemistry::catchFactor(m, -5.0), 1.0);
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 0.0), 1.0);
+  EXPECT_NEAR(FilamentChemistry::walkFactor(m, 45.0), (90.0 - 45.0) / (90.0 + 45.0 / 0.2), 1e-12);
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 90.0), 0.0);
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 200.0), 0.0);
+}
+
+// A filament growing straight at another one's side feels the excluded-volume push on its
+// plus end: load k (d0 - d), ratchet factor exp(-load delta / kT).
+TEST(FilamentRatchetLoad, IncludesExcludedVolumeFromOtherFilaments) {
+  FilamentConfig config;
+  config.types = {filtest::actin()};
+  const double gap = 4.0;  // nm between the tip and the obstacle's axis, d0 = 7 nm
+  Rig rig(2000.0, {1, 1, 1}, {{"G", 0.0}}, {1000}, config, [&](FilamentNetwork& net) {
+    net.addFilament(makeStraightFilament(0, Vec3(500.0, 1000.0, 1000.0), Vec3::UnitX(), 40, 40, 2.7));
+    net.addFilament(
+        makeStraightFilament(0, Vec3(608.0 + gap, 900.0, 1000.0), Vec3::UnitY(), 80, 40, 2.7));
+  });
+  const FilamentType& t = config.types[0];
+  const double load = t.excluded_volume_stiffness * (t.excluded_volume_distance - gap);
+  EXPECT_NEAR(rig.chemistry->endLoad(0, true), load, 1e-9);
+  EXPECT_NEAR(rig.chemistry->ratchetFactor(0, true), std::exp(-load * 2.7 / filtest::kT), 1e-12);
+  EXPECT_EQ(rig.chemistry->endLoad(0, false), 0.0);
+}
+
+// One motor on two fixed antiparallel filaments, no load: each end steps towards its
+// filament's plus end at walk_rate until it reaches the end.
+TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
+  FilamentConfig config;
+  config.types = {inertActin()};
+  MotorType m;
+  m.name = "myo";
+  m.species = "M";
+  m.species_index = 1;
+  m.walk_rate = 2.0;
+  config.motors = {m};
+  const int monomers = 2000;  // 5.4 µm: room for ~1000 steps of 2 monomers
+  const int runs = 40;
+  const double T = 20.0;
+  std::vector<double> steps;
+  for (int run = 0; run < runs; ++run) {
+    Rig rig(6000.0, {1, 1, 1}, {{"G", 0.0}, {"M", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
+      net.addFilament(makeStraightFilament(0, Vec3(200.0, 3000.0, 3000.0), Vec3::UnitX(), monomers, 40, 2.7));
+      net.addFilament(makeStraightFilament(0, Vec3(5600.0, 3200.0, 3000.0), -Vec3::UnitX(), monomers, 40, 2.7));
+      Binding b;
+      b.filament = {0, 1};
+      b.site = {10, 10};
+      // Unstretched at binding; tensions are only recomputed after minimizations (none here).
+      b.rest_length = (net.sitePosition(BinderKind::kMotor, 0, 1, 10) - net.sitePosition(BinderKind::kMotor, 0, 0, 10)).norm();
+      net.bind(BinderKind::kMotor, b);
+    }, 100 + run);
+    rig.engine->advance(T);
+    const Binding& b = rig.network->motors().front();
+    steps.push_back(static_cast<double>(b.site[0] - 10));
+    steps.push_back(static_cast<double>(b.site[1] - 10));
+  }
+  const auto mo = chemtest::moments(steps);
+  std::printf("[ measured ] motor steps per end in %g s: %.2f +- %.2f, expected %.1f\n", T, mo.mean,
+              mo.standardError, m.walk_rate * T);
+  EXPECT_NEAR(mo.mean, m.walk_rate * T, 4.0 * mo.standardError);
+  EXPECT_NEAR(mo.variance, m.walk_rate * T, 0.35 * m.walk_rate * T);  // Poisson steps
+}
+
+// Dimer nucleation "2 G -> filament" fires at k [G]^2 V: k / (N_A V) n (n - 1) per s.
+TEST(FilamentNucleation, CreatesDimersAtTheMassActionRate) {
+  FilamentConfig config;
+  FilamentType t = inertActin();
+  t.nucleation_rate = 1e-4;  // 1/(µM s)
+  config.types = {t};
+  const double size = 1000.0, T = 10.0;
+  const double nv = filtest::copiesPerMicromolar(size);
+  const int pool = 6000;
+  Rig rig(size, {1, 1, 1}, {{"G", 0.0}}, {pool}, config, [](FilamentNetwork&) {});
+  rig.engine->advance(T);
+  const auto made = static_cast<double>(rig.network->filaments().size());
+  const double expected = t.nucleation_rate / nv * pool * (pool - 1.0) * T;
+  std::printf("[ measured ] %g nuclei in %g s, expected %.1f\n", made, T, expected);
+  EXPECT_NEAR(made, expected, 4.0 * std::sqrt(expected) + 1.0);
+  EXPECT_EQ(rig.total(0) + 2 * static_cast<int>(made), pool);
+  for (const Filament& f : rig.network->filaments()) EXPECT_EQ(f.monomers(), 2);
+}
+
+// Branching consumes one Arp2/3 and one monomer; unbranching returns the complex, the
+// daughter keeps its monomers: actin (free + polymer) and Arp2/3 (free + branches) are
+// conserved through growth, branching, unbranching and shrinkage.
+TEST(FilamentBranching, ConservesActinAndArp23) {
+  FilamentConfig config;
+  config.types = {filtest::actin()};
+  BrancherType b;
+  b.name = "arp";
+  b.species = "A";
+  b.species_index = 1;
+  b.rate = 0.05;
+  b.unbranch_rate = 0.5;
+  config.branchers = {b};
+  const int g0 = 3000, a0 = 200;
+  Rig rig(1000.0, {2, 2, 2}, {{"G", 1e6}, {"A", 1e6}}, {g0, a0}, config, [](FilamentNetwork& net) {
+    for (int i = 0; i < 5; ++i)
+      net.addFilament(makeStraightFilament(0, Vec3(300.0, 300.0 + 250.0 * i, 1000.0), Vec3::UnitX(), 300, 40, 2.7));
+  });
+  long branched = 0;
+  for (int w = 1; w <= 40; ++w) {
+    rig.engine->advance(0.25 * w);
+    rig.network->layOut(0);
+    rig.chemistry->updateMechanochemistry(*rig.engine);
+    long polymer = 0;
+    for (const Filament& f : rig.network->filaments()) polymer += f.monomers();
+    ASSERT_EQ(polymer + rig.total(0), g0 + 5 * 300);
+    ASSERT_EQ(static_cast<int>(rig.network->branches().size()) + rig.total(1), a0);
+    for (const Branch& br : rig.network->branches()) {
+      const Filament& d = rig.network->filaments()[br.daughter];
+      ASSERT_TRUE(d.minus_capped);
+      // The daughter starts on its mother's site.
+      const Vec3 site = rig.network->sitePosition(BinderKind::kBrancher, 0, br.mother, br.site);
+      ASSERT_LT((d.beads.front() - site).norm(), 1e-9);
+    }
+    branched = std::max<long>(branched, static_cast<long>(rig.network->branches().size()));
+  }
+  EXPECT_GT(branched, 0);
+  EXPECT_GT(rig.engine->reactionEvents()[rig.model.reactions.size() - 1], 0);  // unbranching happened
+}
+
+// A plus end shrinking past a bound linker's site releases the linker into the pool.
+TEST(FilamentShrinkage, ReleasesLinkersItLosesTheSitesOf) {
+  FilamentConfig config;
+  FilamentType t = inertActin();
+  t.plus_off = 20.0;
+  config.types = {t};
+  LinkerType l;
+  l.name = "aa";
+  l.species = "L";
+  l.species_index = 1;
+  l.off_rate = 0.0;  // only shrinkage can free them
+  config.linkers = {l};
+  Rig rig(2000.0, {1, 1, 1}, {{"G", 0.0}, {"L", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
+    net.addFilament(makeStraightFilament(0, Vec3(400.0, 1000.0, 1000.0), Vec3::UnitX(), 200, 40, 2.7));
+    net.addFilament(makeStraightFilament(0, Vec3(400.0, 1035.0, 1000.0), Vec3::UnitX(), 200, 40, 2.7));
+    for (std::int64_t site = 0; site < 20; ++site) {
+      Binding b;
+      b.filament = {0, 1};
+      b.site = {site, site};
+      b.rest_length = 35.0;
+      net.bind(BinderKind::kLinker, b);
+    }
+  });
+  rig.engine->advance(30.0);  // both filaments shrink to their two-monomer minimum
+  for (const Filament& f : rig.network->filaments()) EXPECT_EQ(f.monomers(), 2);
+  EXPECT_EQ(rig.network->linkers().size() + static_cast<std::size_t>(rig.total(1)), 20u);
+  EXPECT_EQ(rig.network->linkers().size(), 0u);  // every site is gone
+  EXPECT_EQ(rig.total(0), 2 * 198);
+}
+
+}  // namespace
+}  // namespace cortex
