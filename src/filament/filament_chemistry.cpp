@@ -252,24 +252,37 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
     }
   }
   std::stable_sort(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.cell < b.cell; });
+  // Occupied cells as ranges of the sorted sites; each unordered pair of neighbouring
+  // cells is visited once (the second cell's key not below the first's).
+  struct Cell {
+    std::uint64_t key;
+    std::size_t begin, end;
+  };
+  std::vector<Cell> cells;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    if (cells.empty() || cells.back().key != sites[i].cell) cells.push_back({sites[i].cell, i, i});
+    cells.back().end = i + 1;
+  }
   std::vector<std::pair<Index, Candidate>> found;
   const double rmin2 = rmin * rmin, rmax2 = rmax * rmax;
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    const Site& a = sites[i];
-    const std::uint64_t ci = a.cell >> 42, cj = a.cell >> 21 & 0x1FFFFF, ck = a.cell & 0x1FFFFF;
+  for (const Cell& a : cells) {
+    const std::uint64_t ci = a.key >> 42, cj = a.key >> 21 & 0x1FFFFF, ck = a.key & 0x1FFFFF;
     for (std::uint64_t di = 0; di < 3; ++di)
       for (std::uint64_t dj = 0; dj < 3; ++dj)
         for (std::uint64_t dk = 0; dk < 3; ++dk) {
           const std::uint64_t key = (ci + di - 1) << 42 | (cj + dj - 1) << 21 | (ck + dk - 1);
-          auto lo = std::lower_bound(sites.begin(), sites.end(), key,
-                                     [](const Site& s, std::uint64_t k) { return s.cell < k; });
-          for (; lo != sites.end() && lo->cell == key; ++lo) {
-            const auto j = static_cast<std::size_t>(lo - sites.begin());
-            if (j <= i || lo->filament == a.filament) continue;  // each pair once, never on one filament
-            const double d2 = (lo->x - a.x).squaredNorm();
-            if (d2 < rmin2 || d2 > rmax2) continue;
-            found.push_back({compartmentOf(0.5 * (a.x + lo->x)), {{a.filament, lo->filament}, {a.site, lo->site}}});
-          }
+          if (key < a.key) continue;
+          const auto b = std::lower_bound(cells.begin(), cells.end(), key,
+                                          [](const Cell& c, std::uint64_t k) { return c.key < k; });
+          if (b == cells.end() || b->key != key) continue;
+          for (std::size_t i = a.begin; i < a.end; ++i)
+            for (std::size_t j = b->key == a.key ? i + 1 : b->begin; j < b->end; ++j) {
+              const Site &p = sites[i], &q = sites[j];
+              if (p.filament == q.filament) continue;  // never on one filament
+              const double d2 = (q.x - p.x).squaredNorm();
+              if (d2 < rmin2 || d2 > rmax2) continue;
+              found.push_back({compartmentOf(0.5 * (p.x + q.x)), {{p.filament, q.filament}, {p.site, q.site}}});
+            }
         }
   }
   Candidates out;

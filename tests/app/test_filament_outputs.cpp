@@ -248,6 +248,28 @@ TEST(FilamentOutputs, ResumedRunWritesTheSameFilaments) {
   EXPECT_EQ(xdmf, readFile(dir / "A" / "trajectory.xdmf"));
 }
 
+// A filament run is a function of (config, seed, thread count) — and here not even of the
+// thread count: same seed, 1 or 2 threads, identical summary and filament datasets; a
+// different seed differs.
+TEST(FilamentOutputs, SameSeedIdenticalAcrossThreadCounts) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), actomyosinConfig(0.2));
+  for (const auto& [o, args] : {std::pair{"t1", std::vector<std::string>{"--threads", "1"}},
+                                std::pair{"t2", std::vector<std::string>{"--threads", "2"}},
+                                std::pair{"s2", std::vector<std::string>{"--threads", "1", "--seed", "99"}}}) {
+    const RunResult r = runConfig(config, dir / o, args, dir.path(), {"OMP_WAIT_POLICY=passive"});
+    ASSERT_EQ(r.exit_code, 0) << describe(r);
+  }
+  EXPECT_EQ(comparableSummary(dir / "t1", {"wall_seconds", "threads"}),
+            comparableSummary(dir / "t2", {"wall_seconds", "threads"}));
+  const h5::File a = h5::File::openReadOnly(dir / "t1" / "trajectory.h5");
+  const h5::File b = h5::File::openReadOnly(dir / "t2" / "trajectory.h5");
+  const h5::File c = h5::File::openReadOnly(dir / "s2" / "trajectory.h5");
+  const std::string last = "/snapshots/" + a.children("/snapshots").back() + "/filaments/beads";
+  EXPECT_EQ(a.readDoubles(last), b.readDoubles(last));
+  EXPECT_NE(a.readDoubles(last), c.readDoubles(last));
+}
+
 // A run without filaments writes no filaments group and keeps the zero block in the summary.
 TEST(FilamentOutputs, NoFilamentsNoGroup) {
   TempDir dir;
