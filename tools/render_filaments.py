@@ -12,7 +12,8 @@ Reads OUTDIR/trajectory.h5 (layout: ../shared/ARCHITECTURE.md "Output", docs/out
 Filaments are drawn as grey-blue polylines (plus ends marked with a small dot when
 --ends), cross-linkers as short green segments, motors as red segments, branch points as
 orange markers. Every panel shares one set of axis limits (the union over the drawn
-snapshots, or the box given by --box), so a contraction or a growth front reads directly.
+snapshots, or the box given by --box), drawn at equal scale on every axis, so a contraction
+or a growth front reads directly. --wall draws a boundary wall as a grey plane.
 Each panel's title gives the time, filament and bead counts, bound linkers/motors,
 branch points, and the beads' radius of gyration.
 
@@ -22,6 +23,7 @@ Usage:
   render_filaments.py OUT -o net.png --box 0,0,0,2000,2000,2000 --elev 20 --azim -60
   render_filaments.py OUT -o net.png --views 2          # oblique view + view along an axis
   render_filaments.py OUT -o net.png --no-linkers      # filaments and motors only
+  render_filaments.py OUT -o net.png --wall z=1000 --ends   # show a boundary wall and plus ends
 
 Exit code 2 with a one-line message on a missing file or snapshot.
 Needs numpy, h5py and matplotlib (Debian: /usr/bin/python3).
@@ -100,11 +102,13 @@ def main():
     ap.add_argument("--axis", default="z", choices=("x", "y", "z"), help="viewing axis of the second view")
     ap.add_argument("--elev", type=float, default=22.0)
     ap.add_argument("--azim", type=float, default=-55.0)
+    ap.add_argument("--wall", action="append", help="draw a translucent wall plane AXIS=VALUE in nm (repeatable)")
     ap.add_argument("--no-linkers", action="store_true")
     ap.add_argument("--no-motors", action="store_true")
     ap.add_argument("--ends", action="store_true", help="mark plus ends with dots")
     ap.add_argument("--lw", type=float, default=0.8, help="filament line width")
-    ap.add_argument("--size", type=float, default=4.2, help="panel size in inches")
+    ap.add_argument("--size", default="4.2", help="panel size in inches: S or W,H")
+    ap.add_argument("--zoom", type=float, default=1.2, help="3D axes zoom (matplotlib >= 3.6)")
     ap.add_argument("--dpi", type=int, default=100)
     ap.add_argument("--title", default=None)
     a = ap.parse_args()
@@ -130,15 +134,21 @@ def main():
         lo, hi = allp.min(axis=0), allp.max(axis=0)
         pad = 0.03 * (hi - lo).max()
         lo, hi = lo - pad, hi + pad
-    span = (hi - lo).max()
-    mid = 0.5 * (lo + hi)
-    lim = np.stack([mid - span / 2, mid + span / 2], axis=1)  # cubic limits: equal aspect
+    lim = np.stack([lo, hi], axis=1)  # per-axis limits, drawn at equal scale (box aspect)
+    walls = []
+    for w in a.wall or []:
+        try:
+            ax_name, val = w.split("=")
+            walls.append(("xyz".index(ax_name.strip()), float(val)))
+        except ValueError:
+            die(f"bad --wall '{w}' (AXIS=VALUE, e.g. z=1000)")
 
     views = [(a.elev, a.azim)]
     if a.views == 2:
         views.append({"x": (0, 0), "y": (0, -90), "z": (90, -90)}[a.axis])
     ncol, nrow = len(snaps), len(views)
-    fig = plt.figure(figsize=(a.size * ncol, a.size * nrow))
+    pw, ph = (float(x) for x in (a.size.split(",") * 2)[:2])
+    fig = plt.figure(figsize=(pw * ncol, ph * nrow))
     for c, s in enumerate(snaps):
         beads, off = s["beads"], s["offsets"]
         polys = [beads[off[i]:off[i + 1]] for i in range(len(off) - 1)]
@@ -161,8 +171,16 @@ def main():
             ax.set_xlim(*lim[0])
             ax.set_ylim(*lim[1])
             ax.set_zlim(*lim[2])
+            for k, val in walls:
+                o = [i for i in range(3) if i != k]
+                u, v = np.meshgrid(lim[o[0]], lim[o[1]])
+                xyz = [None] * 3
+                xyz[k], xyz[o[0]], xyz[o[1]] = np.full_like(u, val), u, v
+                ax.plot_surface(*xyz, color="0.5", alpha=0.15, shade=False)
             try:
-                ax.set_box_aspect((1, 1, 1))
+                ax.set_box_aspect(tuple(lim[:, 1] - lim[:, 0]), zoom=a.zoom)
+            except TypeError:  # matplotlib < 3.6: no zoom
+                ax.set_box_aspect(tuple(lim[:, 1] - lim[:, 0]))
             except AttributeError:
                 pass
             ax.view_init(elev=el, azim=az)
@@ -170,17 +188,22 @@ def main():
             ax.set_xlabel("x (nm)", fontsize=7, labelpad=-2)
             ax.set_ylabel("y (nm)", fontsize=7, labelpad=-2)
             ax.set_zlabel("z (nm)", fontsize=7, labelpad=-2)
+            if r == 1:  # the axis we look along: no crowded ticks
+                getattr(ax, f"set_{a.axis}ticklabels")([])
+                getattr(ax, f"set_{a.axis}label")("")
             if r == 0:
                 ax.set_title(f"t = {s['time']:.2f} s: {len(polys)} filaments, {len(beads)} beads\n"
                              f"{len(s['linkers'])} linkers, {len(s['motors'])} motors, "
                              f"{len(s['branch'])} branches, Rg = {rg:.0f} nm", fontsize=8)
     handles = [Line2D([], [], color="#3b5b92", lw=1.5, label="filament")]
-    if not a.no_linkers:
+    if not a.no_linkers and any(len(s["linkers"]) for s in snaps):
         handles.append(Line2D([], [], color="#2ca02c", lw=1.5, label="cross-linker"))
-    if not a.no_motors:
+    if not a.no_motors and any(len(s["motors"]) for s in snaps):
         handles.append(Line2D([], [], color="#d62728", lw=1.5, label="motor"))
     if any(len(s["branch"]) for s in snaps):
         handles.append(Line2D([], [], color="#ff7f0e", marker="o", lw=0, label="Arp2/3 branch"))
+    if a.ends:
+        handles.append(Line2D([], [], color="k", marker="o", ms=3, lw=0, label="plus end"))
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
     if a.title:
         fig.suptitle(a.title, fontsize=10)

@@ -147,14 +147,19 @@ void runSimulation(const RunRequest& request) {
 
 std::string checkConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   const Config config = loadConfig(file, overrides);
-  Index vertices = 0;
-  for (const MembraneConfig& mc : config.membranes) vertices += buildMembrane(mc, config.source)->mesh().numVertices();
+  // Everything a run builds before its first step (meshes, filament placement, engines)
+  // is built here too, so that check and run refuse the same inputs.
+  const auto system = buildSystem(config, nullptr);
   const std::string chemistry =
-      config.chemistry ? fmt::format(", {} species, {} reactions in {} compartments", config.chemistry->model.species.size(),
-                                     config.chemistry->model.reactions.size(), config.chemistry->model.grid.count())
-                       : "";
-  return fmt::format("{}: ok ({} membrane{}, {} vertices{}, end_time {:g} s)", file.string(), config.membranes.size(),
-                     config.membranes.size() == 1 ? "" : "s", vertices, chemistry, config.simulation.end_time);
+      system->chemistry() ? fmt::format(", {} species, {} reactions in {} compartments",
+                                        system->chemistryModel().species.size(),
+                                        system->chemistryModel().reactions.size(), system->chemistryModel().grid.count())
+                          : "";
+  const std::string filaments =
+      system->filaments() ? fmt::format(", {} filaments", system->filaments()->filaments().size()) : "";
+  return fmt::format("{}: ok ({} membrane{}, {} vertices{}{}, end_time {:g} s)", file.string(), config.membranes.size(),
+                     config.membranes.size() == 1 ? "" : "s", system->numVertices(), filaments, chemistry,
+                     config.simulation.end_time);
 }
 
 }  // namespace cortex
