@@ -181,6 +181,19 @@ void FilamentChemistry::computeTensions() {
   for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
 
+// Counting sort of (compartment, candidate) by compartment, keeping their order within one.
+FilamentChemistry::Candidates FilamentChemistry::byCompartment(
+    const std::vector<std::pair<Index, Candidate>>& items) const {
+  Candidates out;
+  out.start.assign(grid_.count() + 1, 0);
+  for (const auto& [comp, _] : items) ++out.start[comp + 1];
+  for (Index k = 0; k < grid_.count(); ++k) out.start[k + 1] += out.start[k];
+  out.list.resize(items.size());
+  std::vector<Index> fill(out.start.begin(), out.start.end() - 1);
+  for (const auto& [comp, cand] : items) out.list[fill[comp]++] = cand;
+  return out;
+}
+
 void FilamentChemistry::findCandidates() {
   const FilamentConfig& cfg = net_.config();
   for (std::size_t ch = 0; ch < channels_.size(); ++ch) {
@@ -206,13 +219,7 @@ void FilamentChemistry::findCandidates() {
                              {{f, f}, {static_cast<std::int32_t>(s), static_cast<std::int32_t>(s)}}});
         }
       }
-      Candidates& out = candidates_[ch];
-      out.start.assign(grid_.count() + 1, 0);
-      for (const auto& [comp, _] : sites) ++out.start[comp + 1];
-      for (Index k = 0; k < grid_.count(); ++k) out.start[k + 1] += out.start[k];
-      out.list.resize(sites.size());
-      std::vector<Index> fill(out.start.begin(), out.start.end() - 1);
-      for (const auto& [comp, cand] : sites) out.list[fill[comp]++] = cand;
+      candidates_[ch] = byCompartment(sites);
     }
   }
 }
@@ -285,14 +292,7 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
             }
         }
   }
-  Candidates out;
-  out.start.assign(grid_.count() + 1, 0);
-  for (const auto& [comp, _] : found) ++out.start[comp + 1];
-  for (Index k = 0; k < grid_.count(); ++k) out.start[k + 1] += out.start[k];
-  out.list.resize(found.size());
-  std::vector<Index> fill(out.start.begin(), out.start.end() - 1);
-  for (const auto& [comp, cand] : found) out.list[fill[comp]++] = cand;
-  return out;
+  return byCompartment(found);
 }
 
 // --- rate factors ------------------------------------------------------------------------

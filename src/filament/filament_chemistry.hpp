@@ -75,6 +75,7 @@ class FilamentChemistry final : public ReactionHook {
   void computeTensions();
   void findCandidates();
   Candidates pairsFor(BinderKind kind, Index type, double rmin, double rmax, int every) const;
+  Candidates byCompartment(const std::vector<std::pair<Index, Candidate>>& items) const;
   // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the
   // network changes inside a window; flush() passes the entries that changed to the
   // engine. rebuildFactors() recomputes all of them from scratch (after a minimization,
