@@ -50,6 +50,13 @@ FilamentType readType(const ConfigReader& r, bool single, const std::vector<Spec
   t.cylinder_monomers = static_cast<int>(r.integer("cylinder_monomers", t.cylinder_monomers, 1, 1'000'000));
   t.bending_stiffness = r.number("bending_stiffness", t.bending_stiffness, Range::nonNegative(), "pN·nm");
   t.stretching_stiffness = r.number("stretching_stiffness", t.stretching_stiffness, Range::positive(), "pN/nm");
+  // End rates default to ATP-actin's (Pollard 1986, as in MEDYAN) once there is a monomer
+  // species to exchange with, and to 0 (mechanics only) without one.
+  if (r.has("monomer_species")) {
+    t.monomer_species_index = speciesIndex(r, "monomer_species", species);
+    t.monomer_species = species[t.monomer_species_index].name;
+    t.plus_on = 11.6, t.plus_off = 1.4, t.minus_on = 1.3, t.minus_off = 0.8;
+  }
   t.plus_on = r.number("plus_on", t.plus_on, Range::nonNegative(), "1/(µM·s)");
   t.plus_off = r.number("plus_off", t.plus_off, Range::nonNegative(), "1/s");
   t.minus_on = r.number("minus_on", t.minus_on, Range::nonNegative(), "1/(µM·s)");
@@ -60,13 +67,9 @@ FilamentType readType(const ConfigReader& r, bool single, const std::vector<Spec
       r.number("excluded_volume_distance", t.excluded_volume_distance, Range::positive(), "nm");
   t.nucleation_rate = r.number("nucleation_rate", t.nucleation_rate, Range::nonNegative(), "1/(µM·s)");
   const bool exchanges = t.plus_on > 0 || t.plus_off > 0 || t.minus_on > 0 || t.minus_off > 0 || t.nucleation_rate > 0;
-  if (r.has("monomer_species")) {
-    t.monomer_species_index = speciesIndex(r, "monomer_species", species);
-    t.monomer_species = species[t.monomer_species_index].name;
-  } else if (exchanges) {
+  if (exchanges && t.monomer_species_index < 0)
     r.fail("monomer_species", "is required (the [[species]] of free monomers) when an end rate or "
                               "nucleation_rate is non-zero");
-  }
   r.finish();
   return t;
 }

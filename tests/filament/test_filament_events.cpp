@@ -63,6 +63,7 @@ TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
   m.species = "M";
   m.species_index = 1;
   m.walk_rate = 2.0;
+  m.on_rate = m.off_rate = 0.0;  // it only walks
   config.motors = {m};
   const int monomers = 2000;  // 5.4 µm: room for ~1000 steps of 2 monomers
   const int runs = 40;
@@ -160,7 +161,7 @@ TEST(FilamentShrinkage, ReleasesLinkersItLosesTheSitesOf) {
   l.name = "aa";
   l.species = "L";
   l.species_index = 1;
-  l.off_rate = 0.0;  // only shrinkage can free them
+  l.on_rate = l.off_rate = 0.0;  // only shrinkage can free them
   config.linkers = {l};
   Rig rig(2000.0, {1, 1, 1}, {{"G", 0.0}, {"L", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
     net.addFilament(makeStraightFilament(0, Vec3(400.0, 1000.0, 1000.0), Vec3::UnitX(), 200, 40, 2.7));
