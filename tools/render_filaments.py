@@ -207,7 +207,7 @@ def main():
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
     if a.title:
         fig.suptitle(a.title, fontsize=10)
-    fig.subplots_adjust(left=0.02, right=0.98, top=0.9, bottom=0.07, wspace=0.05, hspace=0.05)
+    fig.subplots_adjust(left=0.02, right=0.98, top=0.9 if nrow > 1 else 0.8, bottom=0.07 if nrow > 1 else 0.12, wspace=0.05, hspace=0.05)
     fig.savefig(out, dpi=a.dpi)
     print(f"wrote {out} ({os.path.getsize(out) // 1024} KB)")
 
