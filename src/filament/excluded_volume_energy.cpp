@@ -83,16 +83,18 @@ const std::string& CylinderExclusionEnergy::owner() const {
   return kOwner;
 }
 
-bool CylinderExclusionEnergy::needsRebuild(const double* x) const {
+double CylinderExclusionEnergy::displacements(const double* x) {
   if (!built_ || built_version_ != layout_.version || built_offset_ != layout_.bead_offset ||
       built_x_.size() != 3 * static_cast<std::size_t>(layout_.num_beads))
-    return true;
-  const double limit2 = 0.25 * skin_ * skin_;
+    return INFINITY;
+  moved_.resize(built_x_.size() / 3);
+  double max = 0.0;
   for (std::size_t b = 0; b < built_x_.size(); b += 3) {
     const double dx = x[b] - built_x_[b], dy = x[b + 1] - built_x_[b + 1], dz = x[b + 2] - built_x_[b + 2];
-    if (dx * dx + dy * dy + dz * dz > limit2) return true;
+    moved_[b / 3] = std::sqrt(dx * dx + dy * dy + dz * dz);
+    max = std::max(max, moved_[b / 3]);
   }
-  return false;
+  return max;
 }
 
 void CylinderExclusionEnergy::rebuild(const double* x) {
@@ -182,9 +184,11 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
             const double reach = d0 + skin_;
             const double mid_reach = reach + half_length_[i] + half_length_[j];
             if ((midpoint_[i] - midpoint_[j]).squaredNorm() > mid_reach * mid_reach) continue;
-            if (closestPoints(a0, a1, bead(cj.bead0), bead(cj.bead1)).delta.squaredNorm() >= reach * reach) continue;
+            const double d2 = closestPoints(a0, a1, bead(cj.bead0), bead(cj.bead1)).delta.squaredNorm();
+            if (d2 >= reach * reach) continue;
             if (!excluded_.empty() && std::binary_search(excluded_.begin(), excluded_.end(), pairKey(i, j))) continue;
-            pairs_.push_back({i, j, 0.5 * (ti.excluded_volume_stiffness + tj.excluded_volume_stiffness), d0});
+            pairs_.push_back(
+                {i, j, 0.5 * (ti.excluded_volume_stiffness + tj.excluded_volume_stiffness), d0, std::sqrt(d2)});
           }
         }
   }
@@ -195,12 +199,20 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
 double CylinderExclusionEnergy::evaluate(const Evaluation& e) {
   const double* x = e.x + 3 * static_cast<std::size_t>(layout_.bead_offset);
   double* g = e.gradient ? e.gradient + 3 * static_cast<std::size_t>(layout_.bead_offset) : nullptr;
-  if (needsRebuild(x)) rebuild(x);
+  if (displacements(x) > 0.5 * skin_) {
+    rebuild(x);
+    moved_.assign(built_x_.size() / 3, 0.0);
+  }
   auto bead = [x](Index b) { return Eigen::Map<const Vec3>(x + 3 * b); };
   const std::vector<Cylinder>& cyl = layout_.cylinders;
   double energy = 0.0;
   for (const Pair& p : pairs_) {
     const Cylinder &ca = cyl[p.a], &cb = cyl[p.b];
+    // A point of a segment moved at most as far as the farther of its two beads, so the
+    // pair's distance shrank by at most the sum of those since the build: pairs that
+    // were far enough apart then are still out of range, without their closest points.
+    const double shrink = std::max(moved_[ca.bead0], moved_[ca.bead1]) + std::max(moved_[cb.bead0], moved_[cb.bead1]);
+    if (p.built - shrink >= p.distance) continue;
     const Vec3 a0 = bead(ca.bead0), a1 = bead(ca.bead1), b0 = bead(cb.bead0), b1 = bead(cb.bead1);
     const SegmentClosestPoints cp = closestPoints(a0, a1, b0, b1);
     const double d2 = cp.delta.squaredNorm();

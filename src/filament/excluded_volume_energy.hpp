@@ -44,8 +44,11 @@ class CylinderExclusionEnergy final : public EnergyTerm {
   struct Pair {
     Index a, b;
     double stiffness, distance;
+    double built;  // closest distance at the last build
   };
-  bool needsRebuild(const double* x) const;
+  // Fills moved_ with each bead's displacement since the last build and returns the
+  // largest, or infinity when the layout changed.
+  double displacements(const double* x);
   void rebuild(const double* x);
 
   const FilamentLayout& layout_;
@@ -57,6 +60,7 @@ class CylinderExclusionEnergy final : public EnergyTerm {
   std::uint64_t built_version_ = 0;
   Index built_offset_ = 0;
   std::vector<double> built_x_;
+  std::vector<double> moved_;  // per bead, nm
   std::int64_t rebuilds_ = 0;
   // Cell-list scratch, kept to avoid reallocating on every rebuild.
   std::vector<Vec3> midpoint_;
