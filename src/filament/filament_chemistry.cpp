@@ -176,7 +176,7 @@ void FilamentChemistry::computeTensions() {
                         net_.sitePosition(kind, b.type, b.filament[0], b.site[0]))
                            .norm();
       b.tension = k * (l - b.rest_length);
-      b.compartment = compartmentOf(bindingMidpoint(kind, b));
+      b.compartment = compartmentOf(net_.sitePosition(kind, b.type, b.filament[0], b.site[0]));
     }
   for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
@@ -226,7 +226,7 @@ void FilamentChemistry::findCandidates() {
 
 // Site pairs on different filaments at a distance in [rmin, rmax], found through a cell
 // list of the sites (cells of edge rmax, sorted by cell key) and grouped by the
-// compartment of the pair's midpoint. Only sites whose index is a multiple of `every`
+// compartment of the pair's first site (where the bound protein's reactions will fire). Only sites whose index is a multiple of `every`
 // may bind.
 FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index type, double rmin, double rmax,
                                                           int every) const {
@@ -234,6 +234,7 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
     std::uint64_t cell;
     Index filament;
     std::int32_t site;
+    Index compartment;
     Vec3 x;
   };
   const double inv = 1.0 / rmax;
@@ -254,7 +255,7 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
         if (j % every != 0) continue;
         const double w = ((static_cast<double>(j) + 0.5) * sp - lo) / span;
         const Vec3 x = (1.0 - w) * fil.beads[c] + w * fil.beads[c + 1];
-        sites.push_back({cellOf(x), f, static_cast<std::int32_t>(j), x});
+        sites.push_back({cellOf(x), f, static_cast<std::int32_t>(j), compartmentOf(x), x});
       }
     }
   }
@@ -288,7 +289,7 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
               if (p.filament == q.filament) continue;  // never on one filament
               const double d2 = (q.x - p.x).squaredNorm();
               if (d2 < rmin2 || d2 > rmax2) continue;
-              found.push_back({compartmentOf(0.5 * (p.x + q.x)), {{p.filament, q.filament}, {p.site, q.site}}});
+              found.push_back({p.compartment, {{p.filament, q.filament}, {p.site, q.site}}});
             }
         }
   }
@@ -296,11 +297,6 @@ FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index
 }
 
 // --- rate factors ------------------------------------------------------------------------
-
-Vec3 FilamentChemistry::bindingMidpoint(BinderKind kind, const Binding& b) const {
-  return 0.5 * (net_.sitePosition(kind, b.type, b.filament[0], b.site[0]) +
-                net_.sitePosition(kind, b.type, b.filament[1], b.site[1]));
-}
 
 void FilamentChemistry::contribute(FilamentReaction kind, Index type, Index c, double w) {
   const Index ch = channelOf(kind, type);

@@ -70,7 +70,6 @@ class FilamentChemistry final : public ReactionHook {
 
   Index channelOf(FilamentReaction kind, Index type) const;
   Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
-  Vec3 bindingMidpoint(BinderKind kind, const Binding& b) const;
   void computeLoads();
   void computeTensions();
   void findCandidates();
