@@ -50,7 +50,7 @@ class ChemistryEngine {
   // stationary distribution is uniform in the confined volume); compartments with
   // f = 0 are inactive: no hops in or out. Propensities of reactions whose species are
   // confined (their first reactant, or first product for order 0, decides) scale by f
-  // (order 0), 1 (order 1) or 1/f (order 2), hooked reactions (per-site propensities)
+  // (order 0), 1 (order 1) or 1/f (order 2), per-site reactions (ReactionDef::per_site)
   // by f^-order, and all are 0 where f = 0. Copies sitting in a
   // compartment that becomes inactive move to the nearest active one (breadth first over
   // face neighbours, ties by compartment index and face order), so none is lost; throws

@@ -58,6 +58,9 @@ struct ReactionDef {
   // Carried out by the engine's ReactionHook (filament reactions); such reactions are
   // built by the program, never parsed from a config.
   bool hooked = false;
+  // Its propensity counts sites (filament ends, site pairs), each reacting at k prod [X]:
+  // under confinement it scales by f^-order (ChemistryEngine::setConfinement).
+  bool per_site = false;
   int order() const;
 };
 

@@ -61,9 +61,9 @@ class EngineBase : public ChemistryEngine {
     const double f = volume_[static_cast<std::size_t>(c) * S_ + s];
     if (!(f > 0.0)) return 0.0;
     const int order = reaction_order_[r];
-    // A hooked reaction's propensity is per site (an end, a pair of sites): its rate is
-    // k prod [X], each concentration n / (f V), whatever the order.
-    if (net_.hooked[r]) return order == 0 ? 1.0 : order == 1 ? 1.0 / f : 1.0 / (f * f);
+    // A per-site propensity (an end, a pair of sites) is k prod [X], each concentration
+    // n / (f V), whatever the order.
+    if (net_.perSite[r]) return order == 0 ? 1.0 : order == 1 ? 1.0 / f : 1.0 / (f * f);
     return order == 0 ? f : order == 2 ? 1.0 / f : 1.0;
   }
   bool active(Index c, Index s) const { return !confined(s) || volume_[static_cast<std::size_t>(c) * S_ + s] > 0.0; }

@@ -89,6 +89,7 @@ ReactionNetwork::ReactionNetwork(const ChemistryModel& model) {
     const ReactionDef& def = model.reactions[r];
     kernels.push_back(kernelFor(def, model.grid.volume(), numSpecies));
     hooked.push_back(def.hooked ? 1 : 0);
+    perSite.push_back(def.per_site ? 1 : 0);
     for (const auto& [s, delta] : netChanges(def))
       if (delta != 0) changes.values.push_back({s, delta});
     changes.endRow();

@@ -63,6 +63,7 @@ struct ReactionNetwork {
   Rows<Index> affected;          // per reaction: reactions whose propensity it changes
   Rows<Index> dependents;        // per species: reactions whose propensity reads it
   std::vector<char> hooked;      // per reaction: carried out by a ReactionHook
+  std::vector<char> perSite;     // per reaction: propensity per site (ReactionDef::per_site)
   std::vector<double> hopRate;   // per species: D/h^2, per copy and per face
   std::vector<Index> diffusing;  // species with hopRate > 0, ascending
 };

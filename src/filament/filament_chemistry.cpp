@@ -57,6 +57,7 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
     d.products = std::move(products);
     d.rate = rate;
     d.hooked = true;
+    d.per_site = kind != FilamentReaction::kNucleate;  // nucleation is volumetric mass action
     row[type] = static_cast<Index>(channels_.size());
     channels_.push_back({kind, type, static_cast<Index>(model.reactions.size())});
     model.reactions.push_back(std::move(d));
@@ -107,8 +108,13 @@ Index FilamentChemistry::channelOf(FilamentReaction kind, Index type) const {
 
 // --- force-dependent laws -------------------------------------------------------------
 
+// Force-dependent speed-ups are capped at kMaxFactor times the zero-force rate: beyond
+// that the bond breaks within the window anyway, and unbounded weights (e^700 = inf)
+// would swamp the other objects' weights in the rate-factor sums.
+constexpr double kMaxFactor = 1e6;
+
 double FilamentChemistry::slipFactor(const LinkerType& l, double tension) const {
-  return std::exp(std::abs(tension) * l.slip_length / kT_);
+  return std::min(kMaxFactor, std::exp(std::min(std::abs(tension) * l.slip_length / kT_, 50.0)));
 }
 
 double FilamentChemistry::catchFactor(const MotorType& m, double tension) {
@@ -377,9 +383,10 @@ void FilamentChemistry::flush(ChemistryEngine& engine) {
 // --- events ------------------------------------------------------------------------------
 
 bool FilamentChemistry::fired(Index reaction, Index compartment, ChemistryEngine& engine, RandomStream& random) {
-  const auto it = std::find_if(channels_.begin(), channels_.end(),
-                               [&](const Channel& ch) { return ch.reaction == reaction; });
-  if (it == channels_.end()) return true;  // not ours: plain mass action
+  // Filament reactions are appended contiguously after the config's own.
+  const Index k = channels_.empty() ? -1 : reaction - channels_.front().reaction;
+  if (k < 0 || k >= static_cast<Index>(channels_.size())) return true;  // not ours: plain mass action
+  const auto it = channels_.begin() + k;
   using K = FilamentReaction;
   bool done = false;
   switch (it->kind) {

@@ -46,7 +46,7 @@ FilamentType readType(const ConfigReader& r, bool single, const std::vector<Spec
   if (!single && !r.has("name")) r.fail("name", "is required when there are several [[filament_type]]");
   t.name = r.string("name", t.name);
   checkName(r, t.name);
-  t.monomer_size = r.number("monomer_size", t.monomer_size, Range::positive(), "nm");
+  t.monomer_size = r.number("monomer_size", t.monomer_size, Range{1e-3, 1e6, false, false}, "nm");
   t.cylinder_monomers = static_cast<int>(r.integer("cylinder_monomers", t.cylinder_monomers, 1, 1'000'000));
   t.bending_stiffness = r.number("bending_stiffness", t.bending_stiffness, Range::nonNegative(), "pN·nm");
   t.stretching_stiffness = r.number("stretching_stiffness", t.stretching_stiffness, Range::positive(), "pN/nm");
@@ -118,9 +118,9 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
   const FilamentType& t = types[f.type_index];
   f.count = static_cast<int>(r.integer("count", f.count, 0, kMaxCount));
   f.length = r.number("length", f.length, Range::positive(), "nm");
-  if (f.length < t.monomer_size)
-    r.fail("length", fmt::format("({:g} nm) is shorter than one monomer of \"{}\" ({:g} nm)", f.length, t.name,
-                                 t.monomer_size));
+  if (f.length < 1.5 * t.monomer_size)
+    r.fail("length", fmt::format("({:g} nm) is shorter than a dimer of \"{}\" (2 x {:g} nm), the smallest filament",
+                                 f.length, t.name, t.monomer_size));
   if (f.length > space.extent)
     r.fail("length", fmt::format("({:g} nm) exceeds the {} ({:g} nm): no filament fits", f.length, space.what,
                                  space.extent));
@@ -260,7 +260,21 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
       if (f.types[j].name == f.types[i].name)
         type_tables[i].fail("name", fmt::format("\"{}\" is used by filament_type.{} already", f.types[i].name, j));
   }
-  if (const auto b = root.table("boundary")) f.boundary = readBoundary(*b, grid_max);
+  if (const auto b = root.table("boundary")) {
+    f.boundary = readBoundary(*b, grid_max);
+    // Ends outside the grid would draw monomers from the nearest compartment: refuse.
+    const Vec3 lo = f.boundary->shape == BoundaryConfig::Shape::kSphere
+                        ? Vec3(f.boundary->center.array() - f.boundary->radius)
+                        : f.boundary->min;
+    const Vec3 hi = f.boundary->shape == BoundaryConfig::Shape::kSphere
+                        ? Vec3(f.boundary->center.array() + f.boundary->radius)
+                        : f.boundary->max;
+    if (chemistry && ((lo.array() < -1e-9).any() || (hi.array() > grid_max.array() + 1e-9).any()))
+      b->fail(f.boundary->shape == BoundaryConfig::Shape::kSphere ? "radius" : "max",
+              fmt::format("the boundary reaches outside the compartment grid [0, {:g}] x [0, {:g}] x [0, {:g}] nm, "
+                          "where filament ends would have no monomers to exchange with",
+                          grid_max.x(), grid_max.y(), grid_max.z()));
+  }
   const Space space = spaceOf(f.boundary, grid_max);
   for (const ConfigReader& r : root.tableArray("filaments")) f.initial.push_back(readInit(r, f.types, space));
 

@@ -1,15 +1,71 @@
 #include "sim/filament_builder.hpp"
 
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/error.hpp"
 #include "core/random.hpp"
 #include "filament/filament_placement.hpp"
 
 namespace cortex {
+namespace {
+
+// A checkpoint is input too: refuse anything the network could not have produced with
+// this config (types, monotone lattices, finite beads, sites on their filaments, one
+// protein per site, capped daughters), so a damaged file stops with exit 2, not a crash.
+void checkRestored(const FilamentConfig& config, const FilamentState& s) {
+  auto bad = [](const std::string& what) {
+    return InputError("checkpoint.h5: /filaments: " + what + " (damaged file, or a config with fewer types?)");
+  };
+  for (std::size_t i = 0; i < s.filaments.size(); ++i) {
+    const Filament& f = s.filaments[i];
+    if (f.type < 0 || static_cast<std::size_t>(f.type) >= config.types.size())
+      throw bad(fmt::format("filament {} has type {}", i, f.type));
+    for (std::size_t b = 0; b < f.beads.size(); ++b) {
+      if (!f.beads[b].allFinite()) throw bad(fmt::format("filament {} has a non-finite bead", i));
+      if (b > 0 && f.lattice[b] <= f.lattice[b - 1]) throw bad(fmt::format("filament {} has an empty cylinder", i));
+    }
+  }
+  FilamentNetwork probe(config);
+  for (const Filament& f : s.filaments) probe.addFilament(f);
+  auto checkSite = [&](BinderKind kind, Index type, Index filament, std::int64_t site, const char* what) {
+    if (!probe.siteExists(kind, type, filament, site))
+      throw bad(fmt::format("a {} sits on site {} that filament {} does not cover", what, site, filament));
+  };
+  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor}) {
+    const bool linker = kind == BinderKind::kLinker;
+    const auto& bound = linker ? s.linkers : s.motors;
+    const std::size_t types = linker ? config.linkers.size() : config.motors.size();
+    const char* what = linker ? "linker" : "motor";
+    for (const Binding& b : bound) {
+      if (b.type < 0 || static_cast<std::size_t>(b.type) >= types) throw bad(fmt::format("a {} has type {}", what, b.type));
+      if (b.filament[0] == b.filament[1]) throw bad(fmt::format("a {} binds one filament twice", what));
+      if (!std::isfinite(b.rest_length) || b.rest_length < 0) throw bad(fmt::format("a {} has a bad rest length", what));
+      for (int e = 0; e < 2; ++e) {
+        checkSite(kind, b.type, b.filament[e], b.site[e], what);
+        if (probe.occupied(kind, b.type, b.filament[e], b.site[e]))
+          throw bad(fmt::format("two {}s share site {} of filament {}", what, b.site[e], b.filament[e]));
+      }
+      probe.bind(kind, b);
+    }
+  }
+  for (const Branch& b : s.branches) {
+    if (b.type < 0 || static_cast<std::size_t>(b.type) >= config.branchers.size())
+      throw bad(fmt::format("a branch has type {}", b.type));
+    if (b.mother == b.daughter || !s.filaments[b.daughter].minus_capped)
+      throw bad(fmt::format("branch daughter {} is not a capped filament", b.daughter));
+    checkSite(BinderKind::kBrancher, b.type, b.mother, b.site, "branch");
+  }
+}
+
+}  // namespace
 
 std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& config, const Vec3& box_min,
                                                       const Vec3& box_max, std::uint64_t seed,
                                                       const FilamentState* restored) {
   auto network = std::make_unique<FilamentNetwork>(config);
   if (restored) {
+    checkRestored(config, *restored);
     network->restore(restored->filaments, restored->linkers, restored->motors, restored->branches);
     return network;
   }

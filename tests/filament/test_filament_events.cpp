@@ -5,7 +5,9 @@
 #include <cmath>
 
 #include "../chem/chem_statistics.hpp"
+#include "core/error.hpp"
 #include "filament_fixtures.hpp"
+#include "sim/filament_builder.hpp"
 
 namespace cortex {
 namespace {
@@ -179,6 +181,44 @@ TEST(FilamentShrinkage, ReleasesLinkersItLosesTheSitesOf) {
   EXPECT_EQ(rig.network->linkers().size() + static_cast<std::size_t>(rig.total(1)), 20u);
   EXPECT_EQ(rig.network->linkers().size(), 0u);  // every site is gone
   EXPECT_EQ(rig.total(0), 2 * 198);
+}
+
+}  // namespace
+}  // namespace cortex
+
+namespace cortex {
+namespace {
+
+// A damaged checkpoint stops with an input error instead of crashing the run.
+TEST(FilamentRestore, RefusesDamagedState) {
+  FilamentConfig config;
+  config.types = {filtest::actin()};
+  LinkerType l;
+  l.name = "aa";
+  l.species_index = 1;
+  config.linkers = {l};
+  FilamentState good;
+  good.filaments = {makeStraightFilament(0, Vec3(100, 100, 100), Vec3::UnitX(), 100, 40, 2.7),
+                    makeStraightFilament(0, Vec3(100, 135, 100), Vec3::UnitX(), 100, 40, 2.7)};
+  Binding b;
+  b.filament = {0, 1};
+  b.site = {3, 3};
+  b.rest_length = 35.0;
+  good.linkers = {b};
+  EXPECT_NO_THROW(buildFilamentNetwork(config, Vec3::Zero(), Vec3::Constant(1000), 1, &good));
+  auto expectRefused = [&](auto damage) {
+    FilamentState s = good;
+    damage(s);
+    EXPECT_THROW(buildFilamentNetwork(config, Vec3::Zero(), Vec3::Constant(1000), 1, &s), InputError);
+  };
+  expectRefused([](FilamentState& s) { s.filaments[0].beads[1].x() = std::nan(""); });
+  expectRefused([](FilamentState& s) { s.filaments[0].type = 7; });
+  expectRefused([](FilamentState& s) { s.filaments[0].lattice[1] = s.filaments[0].lattice[0]; });
+  expectRefused([](FilamentState& s) { s.linkers[0].type = 5; });
+  expectRefused([](FilamentState& s) { s.linkers[0].site[1] = 1000000; });
+  expectRefused([](FilamentState& s) { s.linkers[0].filament[1] = 0; });
+  expectRefused([](FilamentState& s) { s.linkers.push_back(s.linkers[0]); });  // one site, two linkers
+  expectRefused([](FilamentState& s) { s.branches.push_back({0, 0, 1, 2, 0}); });  // no brancher types
 }
 
 }  // namespace
