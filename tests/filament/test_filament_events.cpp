@@ -94,6 +94,42 @@ TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
   EXPECT_NEAR(mo.variance, m.walk_rate * T, 0.35 * m.walk_rate * T);  // Poisson steps
 }
 
+// A motor between two fixed antiparallel filaments walks its ends apart, stretching
+// itself, until the Hill law stops it at the stall force: tensions are recomputed every
+// 0.05 s as in a run, and the last step may overshoot by one step's worth of tension.
+TEST(FilamentMotor, StallsAtTheStallForce) {
+  FilamentConfig config;
+  config.types = {inertActin()};
+  MotorType m;
+  m.name = "myo";
+  m.species = "M";
+  m.species_index = 1;
+  m.walk_rate = 5.0;
+  m.on_rate = m.off_rate = 0.0;
+  config.motors = {m};
+  Rig rig(4000.0, {1, 1, 1}, {{"G", 0.0}, {"M", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
+    net.addFilament(makeStraightFilament(0, Vec3(500.0, 1900.0, 2000.0), Vec3::UnitX(), 1000, 40, 2.7));
+    net.addFilament(makeStraightFilament(0, Vec3(3200.0, 2100.0, 2000.0), -Vec3::UnitX(), 1000, 40, 2.7));
+    // Sites facing each other across the 200 nm gap: 250 motor sites (of 2 monomers)
+    // from filament 0's minus end is x = 1852; from filament 1's, x = 1848.
+    Binding b;
+    b.filament = {0, 1};
+    b.site = {250, 250};
+    b.rest_length = (net.sitePosition(BinderKind::kMotor, 0, 1, 250) - net.sitePosition(BinderKind::kMotor, 0, 0, 250)).norm();
+    net.bind(BinderKind::kMotor, b);
+  });
+  for (int w = 1; w <= 400; ++w) {  // 20 s, far longer than the ~50 steps to stall
+    rig.engine->advance(0.05 * w);
+    rig.chemistry->updateMechanochemistry(*rig.engine);
+  }
+  const Binding& b = rig.network->motors().front();
+  const double step_tension = m.stiffness * 2.0 * 5.4;  // both ends one step: at most this much
+  std::printf("[ measured ] stalled motor tension %.1f pN (stall force %.0f pN), ends moved %lld and %lld sites\n",
+              b.tension, m.stall_force, static_cast<long long>(b.site[0] - 250), static_cast<long long>(b.site[1] - 250));
+  EXPECT_GT(b.tension, m.stall_force - step_tension);
+  EXPECT_LT(b.tension, m.stall_force + step_tension);
+}
+
 // Dimer nucleation "2 G -> filament" fires at k [G]^2 V: k / (N_A V) n (n - 1) per s.
 TEST(FilamentNucleation, CreatesDimersAtTheMassActionRate) {
   FilamentConfig config;
