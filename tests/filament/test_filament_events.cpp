@@ -20,6 +20,20 @@ FilamentType inertActin() {
   return t;
 }
 
+// Actin that neither grows nor shrinks, and a myosin (species 1) that only walks.
+FilamentConfig walkingMotorOnInertActin(double walk_rate) {
+  FilamentConfig config;
+  config.types = {inertActin()};
+  MotorType m;
+  m.name = "myo";
+  m.species = "M";
+  m.species_index = 1;
+  m.walk_rate = walk_rate;
+  m.on_rate = m.off_rate = 0.0;
+  config.motors = {m};
+  return config;
+}
+
 TEST(FilamentForceLaws, SlipCatchAndHillFollowTheirFormulas) {
   FilamentNetwork net({});
   ChemistryModel model;
@@ -58,15 +72,8 @@ TEST(FilamentRatchetLoad, IncludesExcludedVolumeFromOtherFilaments) {
 // One motor on two fixed antiparallel filaments, no load: each end steps towards its
 // filament's plus end at walk_rate until it reaches the end.
 TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
-  FilamentConfig config;
-  config.types = {inertActin()};
-  MotorType m;
-  m.name = "myo";
-  m.species = "M";
-  m.species_index = 1;
-  m.walk_rate = 2.0;
-  m.on_rate = m.off_rate = 0.0;  // it only walks
-  config.motors = {m};
+  const FilamentConfig config = walkingMotorOnInertActin(2.0);
+  const MotorType& m = config.motors[0];
   const int monomers = 2000;  // 5.4 µm: room for ~1000 steps of 2 monomers
   const int runs = 40;
   const double T = 20.0;
@@ -98,15 +105,8 @@ TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
 // itself, until the Hill law stops it at the stall force: tensions are recomputed every
 // 0.05 s as in a run, and the last step may overshoot by one step's worth of tension.
 TEST(FilamentMotor, StallsAtTheStallForce) {
-  FilamentConfig config;
-  config.types = {inertActin()};
-  MotorType m;
-  m.name = "myo";
-  m.species = "M";
-  m.species_index = 1;
-  m.walk_rate = 5.0;
-  m.on_rate = m.off_rate = 0.0;
-  config.motors = {m};
+  const FilamentConfig config = walkingMotorOnInertActin(5.0);
+  const MotorType& m = config.motors[0];
   Rig rig(4000.0, {1, 1, 1}, {{"G", 0.0}, {"M", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
     net.addFilament(makeStraightFilament(0, Vec3(500.0, 1900.0, 2000.0), Vec3::UnitX(), 1000, 40, 2.7));
     net.addFilament(makeStraightFilament(0, Vec3(3200.0, 2100.0, 2000.0), -Vec3::UnitX(), 1000, 40, 2.7));
