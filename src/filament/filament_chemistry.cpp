@@ -322,11 +322,15 @@ void FilamentChemistry::contributeEnds(Index i, double sign) {
     ratchet_.resize(i + 1, {1.0, 1.0});  // a new filament: unloaded until the next minimization
     load_.resize(i + 1, {0.0, 0.0});
   }
-  const Index plus = compartmentOf(f.beads.back());
+  if (end_compartment_.size() <= static_cast<std::size_t>(i)) end_compartment_.resize(i + 1, {0, 0});
+  // Adding (+1) records where the ends are now; removing (-1) uses the record, so the
+  // two always cancel and picks (fireEnd) read the same compartments.
+  if (sign > 0) end_compartment_[i] = {compartmentOf(f.beads.front()), compartmentOf(f.beads.back())};
+  const Index plus = end_compartment_[i][1];
   contribute(K::kPlusGrow, f.type, plus, sign * ratchet_[i][1]);
   contribute(K::kPlusShrink, f.type, plus, sign);
   if (!f.minusEndActive()) return;
-  const Index minus = compartmentOf(f.beads.front());
+  const Index minus = end_compartment_[i][0];
   contribute(K::kMinusGrow, f.type, minus, sign * ratchet_[i][0]);
   contribute(K::kMinusShrink, f.type, minus, sign);
 }
@@ -450,7 +454,7 @@ bool FilamentChemistry::fireEnd(const Channel& ch, Index c, ChemistryEngine& eng
       [&](Index i) {
         const Filament& fil = fils[i];
         if (fil.type != ch.type || (!plus && !fil.minusEndActive())) return 0.0;
-        if (compartmentOf(plus ? fil.beads.back() : fil.beads.front()) != c) return 0.0;
+        if (end_compartment_[i][plus ? 1 : 0] != c) return 0.0;
         return grow ? ratchet_[i][plus ? 1 : 0] : 1.0;
       },
       random);

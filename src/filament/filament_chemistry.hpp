@@ -110,6 +110,7 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<char> is_dirty_;
   std::vector<Candidates> candidates_;                               // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
+  std::vector<std::array<Index, 2>> end_compartment_;                // per filament: minus, plus
   std::vector<Release> released_;                                    // scratch
 };
 
