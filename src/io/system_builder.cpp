@@ -33,8 +33,15 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
     // Without chemistry the grid is the default one (no [compartments] without species).
     const CompartmentGrid g = chemistry ? chemistry->model.grid : CompartmentGrid{};
     const Vec3 box_min = Vec3::Zero(), box_max = Vec3(g.shape[0], g.shape[1], g.shape[2]) * g.size;
-    auto network = buildFilamentNetwork(*config.filaments, box_min, box_max, seed,
-                                        restored ? &*restored->filaments : nullptr);
+    std::unique_ptr<FilamentNetwork> network;
+    try {
+      network = buildFilamentNetwork(*config.filaments, box_min, box_max, seed,
+                                     restored ? &*restored->filaments : nullptr);
+    } catch (const InputError& e) {
+      // Placement names the [[filaments]] table; say which file it is in.
+      if (restored) throw;
+      throw InputError(fmt::format("{}: {}", config.source, e.what()));
+    }
     if (chemistry) {
       filament_chemistry = std::make_unique<FilamentChemistry>(
           *network, chemistry->model, constants::kBoltzmann * config.simulation.temperature);

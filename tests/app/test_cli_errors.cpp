@@ -272,6 +272,23 @@ TEST_F(CliErrors, ChemistryKeysThatCannotWorkAreRejected) {
                    {"species"});
 }
 
+// Filament tables through the CLI: a valid network passes `check` (placement included),
+// and a misspelt key, a missing species or a filament that cannot fit stop with exit 2.
+TEST_F(CliErrors, FilamentKeysAreCheckedEndToEnd) {
+  const std::string base =
+      "[compartments]\nsize = 500.0\nshape = [2, 2, 1]\n[[species]]\nname = \"G\"\ndiffusion = 2.0e7\ncopies = 100\n"
+      "[[filament_type]]\nmonomer_species = \"G\"\n[[filaments]]\ncount = 5\n";
+  const RunResult ok = check(base);
+  EXPECT_EQ(ok.exit_code, 0) << describe(ok);
+  EXPECT_NE(ok.out.find("5 filaments"), std::string::npos) << describe(ok);
+  expectInputError(check(base + "lenght = 100.0\n"), {"filaments.0.lenght"});
+  expectInputError(check(base + "[[linker]]\nspecies = \"AA\"\n"), {"linker.0.species", "AA"});
+  expectInputError(check(base + "length = 5000.0\n"), {"filaments.0.length"});
+  // A bundle wider than the box is refused when the system is built.
+  expectInputError(check(base + "placement = \"bundle\"\nspacing = 400.0\n", {"--set", "filaments.0.count=7"}),
+                   {"filaments.0", "does not fit"});
+}
+
 TEST_F(CliErrors, RunNeedsConfigOrResume) {
   RunResult r = runCortex({"run"}, dir_.path());
   EXPECT_EQ(r.exit_code, 2) << describe(r);
