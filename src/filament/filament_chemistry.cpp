@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <unordered_map>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -98,7 +97,7 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   factor_.assign(channels_.size() * static_cast<std::size_t>(grid_.count()), 1.0);
   pending_.assign(factor_.size(), 0.0);
   is_dirty_.assign(factor_.size(), 0);
-  candidates_.assign(channels_.size(), Candidates{std::vector<Index>(grid_.count() + 1, 0), {}});
+  candidates_.assign(channels_.size(), BindingCandidates{std::vector<Index>(grid_.count() + 1, 0), {}});
 }
 
 Index FilamentChemistry::channelOf(FilamentReaction kind, Index type) const {
@@ -187,119 +186,22 @@ void FilamentChemistry::computeTensions() {
   for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
 
-// Counting sort of (compartment, candidate) by compartment, keeping their order within one.
-FilamentChemistry::Candidates FilamentChemistry::byCompartment(
-    const std::vector<std::pair<Index, Candidate>>& items) const {
-  Candidates out;
-  out.start.assign(grid_.count() + 1, 0);
-  for (const auto& [comp, _] : items) ++out.start[comp + 1];
-  for (Index k = 0; k < grid_.count(); ++k) out.start[k + 1] += out.start[k];
-  out.list.resize(items.size());
-  std::vector<Index> fill(out.start.begin(), out.start.end() - 1);
-  for (const auto& [comp, cand] : items) out.list[fill[comp]++] = cand;
-  return out;
-}
-
 void FilamentChemistry::findCandidates() {
   const FilamentConfig& cfg = net_.config();
   for (std::size_t ch = 0; ch < channels_.size(); ++ch) {
     const Channel& c = channels_[ch];
     if (c.kind == FilamentReaction::kLinkerBind) {
       const LinkerType& l = cfg.linkers[c.type];
-      candidates_[ch] = pairsFor(BinderKind::kLinker, c.type, l.min_distance, l.max_distance, 1);
+      candidates_[ch] = findSitePairs(net_, grid_, BinderKind::kLinker, c.type, l.min_distance, l.max_distance, 1);
     } else if (c.kind == FilamentReaction::kMotorBind) {
       const MotorType& m = cfg.motors[c.type];
       const int every = std::max(1, static_cast<int>(std::lround(static_cast<double>(m.site_spacing) /
                                                                  net_.spacing(BinderKind::kMotor, c.type))));
-      candidates_[ch] = pairsFor(BinderKind::kMotor, c.type, m.min_distance, m.max_distance, every);
+      candidates_[ch] = findSitePairs(net_, grid_, BinderKind::kMotor, c.type, m.min_distance, m.max_distance, every);
     } else if (c.kind == FilamentReaction::kBranch) {
-      // Every brancher site on a filament of the brancher's type.
-      std::vector<std::pair<Index, Candidate>> sites;
-      const auto& fils = net_.filaments();
-      for (Index f = 0; f < static_cast<Index>(fils.size()); ++f) {
-        if (fils[f].type != cfg.branchers[c.type].filament_type_index) continue;
-        for (Index cyl = 0; cyl < fils[f].numCylinders(); ++cyl) {
-          const auto [first, last] = net_.sitesOnCylinder(BinderKind::kBrancher, c.type, f, cyl);
-          for (std::int64_t s = first; s <= last; ++s)
-            sites.push_back({compartmentOf(net_.sitePosition(BinderKind::kBrancher, c.type, f, s)),
-                             {{f, f}, {static_cast<std::int32_t>(s), static_cast<std::int32_t>(s)}}});
-        }
-      }
-      candidates_[ch] = byCompartment(sites);
+      candidates_[ch] = findBranchSites(net_, grid_, c.type);
     }
   }
-}
-
-// Site pairs on different filaments at a distance in [rmin, rmax], found through a cell
-// list of the sites (cells of edge rmax, sorted by cell key) and grouped by the
-// compartment of the pair's first site (where the bound protein's reactions will fire). Only sites whose index is a multiple of `every`
-// may bind.
-FilamentChemistry::Candidates FilamentChemistry::pairsFor(BinderKind kind, Index type, double rmin, double rmax,
-                                                          int every) const {
-  struct Site {
-    std::uint64_t cell;
-    Index filament;
-    std::int32_t site;
-    Index compartment;
-    Vec3 x;
-  };
-  const double inv = 1.0 / rmax;
-  auto cellOf = [&](const Vec3& x) {
-    // 21 bits per axis, offset so that negative coordinates stay ordered.
-    auto axis = [&](double v) { return static_cast<std::uint64_t>(std::floor(v * inv) + (1 << 20)) & 0x1FFFFF; };
-    return axis(x.x()) << 42 | axis(x.y()) << 21 | axis(x.z());
-  };
-  std::vector<Site> sites;
-  const auto& fils = net_.filaments();
-  const double sp = net_.spacing(kind, type);
-  for (Index f = 0; f < static_cast<Index>(fils.size()); ++f) {
-    const Filament& fil = fils[f];
-    for (Index c = 0; c < fil.numCylinders(); ++c) {
-      const auto [first, last] = net_.sitesOnCylinder(kind, type, f, c);
-      const double lo = static_cast<double>(fil.lattice[c]), span = static_cast<double>(fil.lattice[c + 1]) - lo;
-      for (std::int64_t j = first; j <= last; ++j) {
-        if (j % every != 0) continue;
-        const double w = ((static_cast<double>(j) + 0.5) * sp - lo) / span;
-        const Vec3 x = (1.0 - w) * fil.beads[c] + w * fil.beads[c + 1];
-        sites.push_back({cellOf(x), f, static_cast<std::int32_t>(j), compartmentOf(x), x});
-      }
-    }
-  }
-  std::stable_sort(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.cell < b.cell; });
-  // Occupied cells as ranges of the sorted sites; each unordered pair of neighbouring
-  // cells is visited once (the second cell's key not below the first's).
-  struct Cell {
-    std::uint64_t key;
-    std::size_t begin, end;
-  };
-  std::vector<Cell> cells;
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    if (cells.empty() || cells.back().key != sites[i].cell) cells.push_back({sites[i].cell, i, i});
-    cells.back().end = i + 1;
-  }
-  std::vector<std::pair<Index, Candidate>> found;
-  const double rmin2 = rmin * rmin, rmax2 = rmax * rmax;
-  for (const Cell& a : cells) {
-    const std::uint64_t ci = a.key >> 42, cj = a.key >> 21 & 0x1FFFFF, ck = a.key & 0x1FFFFF;
-    for (std::uint64_t di = 0; di < 3; ++di)
-      for (std::uint64_t dj = 0; dj < 3; ++dj)
-        for (std::uint64_t dk = 0; dk < 3; ++dk) {
-          const std::uint64_t key = (ci + di - 1) << 42 | (cj + dj - 1) << 21 | (ck + dk - 1);
-          if (key < a.key) continue;
-          const auto b = std::lower_bound(cells.begin(), cells.end(), key,
-                                          [](const Cell& c, std::uint64_t k) { return c.key < k; });
-          if (b == cells.end() || b->key != key) continue;
-          for (std::size_t i = a.begin; i < a.end; ++i)
-            for (std::size_t j = b->key == a.key ? i + 1 : b->begin; j < b->end; ++j) {
-              const Site &p = sites[i], &q = sites[j];
-              if (p.filament == q.filament) continue;  // never on one filament
-              const double d2 = (q.x - p.x).squaredNorm();
-              if (d2 < rmin2 || d2 > rmax2) continue;
-              found.push_back({p.compartment, {{p.filament, q.filament}, {p.site, q.site}}});
-            }
-        }
-  }
-  return byCompartment(found);
 }
 
 // --- rate factors ------------------------------------------------------------------------
@@ -510,10 +412,10 @@ bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream&
 
 bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& random) {
   const BinderKind kind = ch.kind == FilamentReaction::kMotorBind ? BinderKind::kMotor : BinderKind::kLinker;
-  const Candidates& cand = candidates_[&ch - channels_.data()];
+  const BindingCandidates& cand = candidates_[&ch - channels_.data()];
   const Index n = cand.count(c);
   if (n == 0) return false;
-  const Candidate& p =
+  const BindingCandidate& p =
       cand.list[cand.start[c] + std::min<Index>(n - 1, static_cast<Index>(random.uniform() * n))];
   // The candidate list is from the last minimization: a site since lost or taken makes
   // this a void event (thinning).
@@ -568,10 +470,10 @@ bool FilamentChemistry::fireWalk(const Channel& ch, Index c, RandomStream& rando
 }
 
 bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& random) {
-  const Candidates& cand = candidates_[&ch - channels_.data()];
+  const BindingCandidates& cand = candidates_[&ch - channels_.data()];
   const Index n = cand.count(c);
   if (n == 0) return false;
-  const Candidate& site = cand.list[cand.start[c] + std::min<Index>(n - 1, static_cast<Index>(random.uniform() * n))];
+  const BindingCandidate& site = cand.list[cand.start[c] + std::min<Index>(n - 1, static_cast<Index>(random.uniform() * n))];
   const Index mother = site.filament[0];
   if (!net_.siteExists(BinderKind::kBrancher, ch.type, mother, site.site[0]) ||
       net_.occupied(BinderKind::kBrancher, ch.type, mother, site.site[0]))

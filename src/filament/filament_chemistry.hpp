@@ -15,6 +15,7 @@
 
 #include "chem/chemistry_engine.hpp"
 #include "chem/reaction_hook.hpp"
+#include "filament/binding_candidates.hpp"
 #include "filament/excluded_volume_energy.hpp"
 #include "filament/filament_network.hpp"
 
@@ -57,24 +58,11 @@ class FilamentChemistry final : public ReactionHook {
     Index type;      // filament, linker, motor or brancher type
     Index reaction;  // index in the model
   };
-  // Candidate pairs (or branching sites) of one binding channel, grouped by compartment.
-  struct Candidate {
-    std::array<Index, 2> filament;
-    std::array<std::int32_t, 2> site;
-  };
-  struct Candidates {
-    std::vector<Index> start;  // per compartment, into list; size C + 1
-    std::vector<Candidate> list;
-    Index count(Index c) const { return start[c + 1] - start[c]; }
-  };
-
   Index channelOf(FilamentReaction kind, Index type) const;
   Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
   void computeLoads();
   void computeTensions();
   void findCandidates();
-  Candidates pairsFor(BinderKind kind, Index type, double rmin, double rmax, int every) const;
-  Candidates byCompartment(const std::vector<std::pair<Index, Candidate>>& items) const;
   // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the
   // network changes inside a window; flush() passes the entries that changed to the
   // engine. rebuildFactors() recomputes all of them from scratch (after a minimization,
@@ -108,7 +96,7 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<double> pending_;                                      // the same, as the network now is
   std::vector<std::size_t> dirty_;                                   // entries of pending_ changed since flush
   std::vector<char> is_dirty_;
-  std::vector<Candidates> candidates_;                               // per channel (binding kinds only)
+  std::vector<BindingCandidates> candidates_;                              // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
   std::vector<std::array<Index, 2>> end_compartment_;                // per filament: minus, plus
   std::vector<Release> released_;                                    // scratch
