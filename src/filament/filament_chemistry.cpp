@@ -96,6 +96,7 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   // The engine starts every rate factor at 1.
   factor_.assign(channels_.size() * static_cast<std::size_t>(grid_.count()), 1.0);
   pending_.assign(factor_.size(), 0.0);
+  for (auto& side : ends_in_) side.assign(grid_.count(), {});
   is_dirty_.assign(factor_.size(), 0);
   candidates_.assign(channels_.size(), BindingCandidates{std::vector<Index>(grid_.count() + 1, 0), {}});
 }
@@ -217,6 +218,16 @@ void FilamentChemistry::contribute(FilamentReaction kind, Index type, Index c, d
   }
 }
 
+// Buckets stay sorted, so a pick visits ends in filament order whatever the history:
+// a resumed run, whose buckets are refiled from scratch, picks the same ends.
+void FilamentChemistry::file(std::vector<Index>& bucket, Index i, double sign) {
+  const auto at = std::lower_bound(bucket.begin(), bucket.end(), i);
+  if (sign > 0)
+    bucket.insert(at, i);
+  else if (at != bucket.end() && *at == i)
+    bucket.erase(at);
+}
+
 void FilamentChemistry::contributeEnds(Index i, double sign) {
   using K = FilamentReaction;
   const Filament& f = net_.filaments()[i];
@@ -225,14 +236,17 @@ void FilamentChemistry::contributeEnds(Index i, double sign) {
     load_.resize(i + 1, {0.0, 0.0});
   }
   if (end_compartment_.size() <= static_cast<std::size_t>(i)) end_compartment_.resize(i + 1, {0, 0});
-  // Adding (+1) records where the ends are now; removing (-1) uses the record, so the
-  // two always cancel and picks (fireEnd) read the same compartments.
+  // Adding (+1) records where the ends are now and files them in their compartments'
+  // buckets; removing (-1) uses the record, so the two always cancel and picks (fireEnd)
+  // see the same ends the rate factors count.
   if (sign > 0) end_compartment_[i] = {compartmentOf(f.beads.front()), compartmentOf(f.beads.back())};
   const Index plus = end_compartment_[i][1];
+  file(ends_in_[1][plus], i, sign);
   contribute(K::kPlusGrow, f.type, plus, sign * ratchet_[i][1]);
   contribute(K::kPlusShrink, f.type, plus, sign);
   if (!f.minusEndActive()) return;
   const Index minus = end_compartment_[i][0];
+  file(ends_in_[0][minus], i, sign);
   contribute(K::kMinusGrow, f.type, minus, sign * ratchet_[i][0]);
   contribute(K::kMinusShrink, f.type, minus, sign);
 }
@@ -255,6 +269,7 @@ void FilamentChemistry::contributeBranch(const Branch& b, double sign) {
 void FilamentChemistry::rebuildFactors() {
   const Index C = grid_.count();
   std::fill(pending_.begin(), pending_.end(), 0.0);
+  for (auto& side : ends_in_) side.assign(grid_.count(), {});
   for (Index i = 0; i < static_cast<Index>(net_.filaments().size()); ++i) contributeEnds(i, 1.0);
   for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor})
     for (const Binding& b : net_.bound(kind)) contributeBinding(kind, b, 1.0);
@@ -351,16 +366,17 @@ bool FilamentChemistry::fireEnd(const Channel& ch, Index c, ChemistryEngine& eng
   const bool plus = ch.kind == K::kPlusGrow || ch.kind == K::kPlusShrink;
   const bool grow = ch.kind == K::kPlusGrow || ch.kind == K::kMinusGrow;
   const auto& fils = net_.filaments();
-  const Index f = pickWeighted(
-      static_cast<Index>(fils.size()),
-      [&](Index i) {
-        const Filament& fil = fils[i];
-        if (fil.type != ch.type || (!plus && !fil.minusEndActive())) return 0.0;
-        if (end_compartment_[i][plus ? 1 : 0] != c) return 0.0;
+  const std::vector<Index>& here = ends_in_[plus ? 1 : 0][c];
+  const Index k = pickWeighted(
+      static_cast<Index>(here.size()),
+      [&](Index j) {
+        const Index i = here[j];
+        if (fils[i].type != ch.type) return 0.0;
         return grow ? ratchet_[i][plus ? 1 : 0] : 1.0;
       },
       random);
-  if (f < 0) return false;
+  if (k < 0) return false;
+  const Index f = here[k];
   if (grow) {
     contributeEnds(f, -1.0);
     net_.grow(f, plus);

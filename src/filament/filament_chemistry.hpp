@@ -69,6 +69,7 @@ class FilamentChemistry final : public ReactionHook {
   // and after rare events that touch many things), which also clears rounding drift.
   void contribute(FilamentReaction kind, Index type, Index c, double w);
   void contributeEnds(Index f, double sign);
+  static void file(std::vector<Index>& bucket, Index i, double sign);
   void contributeBinding(BinderKind kind, const Binding& b, double sign);
   void contributeBranch(const Branch& b, double sign);
   void rebuildFactors();
@@ -99,6 +100,7 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<BindingCandidates> candidates_;                              // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
   std::vector<std::array<Index, 2>> end_compartment_;                // per filament: minus, plus
+  std::array<std::vector<std::vector<Index>>, 2> ends_in_;           // [minus/plus][c]: filaments, sorted
   std::vector<Release> released_;                                    // scratch
 };
 
