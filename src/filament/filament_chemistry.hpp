@@ -30,7 +30,8 @@ inline constexpr int kFilamentReactionKinds = 12;
 
 class FilamentChemistry final : public ReactionHook {
  public:
-  // kT in pN·nm. Resolves species names against `model` (InputError if missing).
+  // kT in pN·nm. Checks that the species the config parser resolved exist in `model`
+  // (InputError otherwise).
   FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT);
 
   // Appends one hooked reaction per (kind, type) with a non-zero rate to `model`.
