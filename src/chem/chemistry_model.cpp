@@ -116,7 +116,7 @@ ReactionDef parseReaction(const std::string& equation, double rate, const std::v
 }
 
 double stochasticRateConstant(const ReactionDef& reaction, double volume_nm3) {
-  const double nv = kCopiesPerMicromolarFemtoliter * volume_nm3 * 1e-9;  // copies per µM here
+  const double nv = copiesPerMicromolar(volume_nm3);
   switch (reaction.order()) {
     case 0:
       return reaction.rate * nv;

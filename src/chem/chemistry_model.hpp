@@ -12,6 +12,8 @@ namespace cortex {
 
 // Avogadro's number in cortex units: copies per µM per fL (1 fL = 1 µm³ = 1e9 nm³).
 inline constexpr double kCopiesPerMicromolarFemtoliter = 602.214076;
+// Copies that make 1 µM in a volume of `volume_nm3` (N_A V).
+inline double copiesPerMicromolar(double volume_nm3) { return kCopiesPerMicromolarFemtoliter * volume_nm3 * 1e-9; }
 
 struct CompartmentGrid {
   double size = 500.0;               // nm, cube edge
@@ -20,6 +22,7 @@ struct CompartmentGrid {
   Index index(int i, int j, int k) const { return (k * shape[1] + j) * shape[0] + i; }
   std::array<int, 3> coords(Index c) const { return {c % shape[0], (c / shape[0]) % shape[1], c / (shape[0] * shape[1])}; }
   double volume() const { return size * size * size; }  // nm^3
+  double copiesPerMicromolar() const { return cortex::copiesPerMicromolar(volume()); }  // in one compartment
   // Face neighbours of c (up to 6; walls are reflective, so missing ones are absent).
   int neighbours(Index c, std::array<Index, 6>& out) const;
   Vec3 centre(Index c) const {

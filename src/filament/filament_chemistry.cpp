@@ -12,10 +12,6 @@ namespace cortex {
 
 namespace {
 
-double copiesPerMicromolar(const CompartmentGrid& grid) {
-  return kCopiesPerMicromolarFemtoliter * grid.volume() * 1e-9;
-}
-
 Vec3 randomDirection(RandomStream& random) {
   const double z = 2.0 * random.uniform() - 1.0;
   const double phi = 2.0 * constants::kPi * random.uniform();
@@ -44,7 +40,7 @@ FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const ChemistryMo
 }
 
 void FilamentChemistry::addReactions(ChemistryModel& model) {
-  const double nv = copiesPerMicromolar(grid_);
+  const double nv = grid_.copiesPerMicromolar();
   auto add = [&](FilamentReaction kind, Index type, std::string equation, std::vector<Stoichiometry> reactants,
                  std::vector<Stoichiometry> products, double rate) {
     auto& row = lookup_[static_cast<int>(kind)];

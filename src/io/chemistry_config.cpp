@@ -59,7 +59,7 @@ SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const st
   if (by_copies) s.copies = r.integer("copies", 0, 0, 2'000'000'000);
   if (by_concentration) {
     const double c = r.requiredNumber("concentration", Range::nonNegative(), "µM");
-    const double copies = c * kCopiesPerMicromolarFemtoliter * box_volume_nm3 * 1e-9;
+    const double copies = c * copiesPerMicromolar(box_volume_nm3);
     if (!(copies <= 2e9)) r.fail("concentration", fmt::format("gives {:.3g} copies in the box, more than 2e9", copies));
     s.copies = std::llround(copies);
   }

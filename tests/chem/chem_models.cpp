@@ -17,7 +17,7 @@ ChemistryModel randomNetwork(int num_species, int num_reactions, std::uint64_t s
   for (int s = 0; s < num_species; ++s) m.species.push_back({"X" + std::to_string(s), diffusion});
   RandomStream rng(seed, StreamId::kInitialConditions);
   const auto pick = [&] { return "X" + std::to_string(static_cast<int>(rng.uniform() * num_species)); };
-  const double nv = copiesPerMicromolar(grid);
+  const double nv = grid.copiesPerMicromolar();
   for (int s = 0; s < num_species; ++s) {
     const std::string x = "X" + std::to_string(s);
     m.reactions.push_back(parseReaction("-> " + x, (2.0 + 4.0 * rng.uniform()) / nv, m.species));

@@ -12,11 +12,6 @@ namespace cortex::chemtest {
 
 inline const char* engineName(EngineKind kind) { return kind == EngineKind::kNextSubvolume ? "nsm" : "direct"; }
 
-// Copies per µM in one compartment (N·V), to write rates as copies per second.
-inline double copiesPerMicromolar(const CompartmentGrid& grid) {
-  return kCopiesPerMicromolarFemtoliter * grid.volume() * 1e-9;
-}
-
 // Non-diffusing species in one 500 nm compartment with the given reactions (equation, rate).
 ChemistryModel wellMixed(const std::vector<std::string>& species,
                          const std::vector<std::pair<std::string, double>>& reactions);

@@ -112,7 +112,7 @@ TEST_P(Confinement, MovingMembraneNeverLosesOrStrandsCopies) {
 // copy number halves; the bimolecular 2 A -> is unchanged in concentration terms.
 TEST_P(Confinement, ZeroOrderPropensityScalesWithVolume) {
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"A ->", 1.0}});
-  m.reactions[0].rate = 40.0 / chemtest::copiesPerMicromolar(m.grid);
+  m.reactions[0].rate = 40.0 / m.grid.copiesPerMicromolar();
   auto engine = makeChemistryEngine(GetParam(), m, {0}, 23);
   engine->setConfinement(0, {0.5}, {{0.5, 0.5, 0.5, 0.5, 1.0, 0.0}});
   engine->advance(10.0);

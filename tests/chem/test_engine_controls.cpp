@@ -18,7 +18,7 @@ class Controls : public ::testing::TestWithParam<EngineKind> {};
 ChemistryModel twoBirthDeathCompartments() {
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"A ->", 1.0}});
   m.grid.shape = {2, 1, 1};
-  m.reactions[0].rate = 100.0 / chemtest::copiesPerMicromolar(m.grid);
+  m.reactions[0].rate = 100.0 / m.grid.copiesPerMicromolar();
   return m;
 }
 

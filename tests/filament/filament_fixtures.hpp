@@ -55,6 +55,4 @@ struct Rig {
   }
 };
 
-inline double copiesPerMicromolar(double size) { return kCopiesPerMicromolarFemtoliter * size * size * size * 1e-9; }
-
 }  // namespace cortex::filtest

@@ -19,7 +19,7 @@ using filtest::Rig;
 TEST(FilamentChemistry, ElongationRateInBufferedPoolMatchesEndRates) {
   const double size = 5000.0, c0 = 10.0, T = 5.0;
   const int filaments = 20, start = 100;
-  const double nv = filtest::copiesPerMicromolar(size);
+  const double nv = copiesPerMicromolar(size * size * size);
   FilamentConfig config;
   config.types = {filtest::actin()};
   const int pool = static_cast<int>(std::lround(c0 * nv));
@@ -62,7 +62,7 @@ TEST(FilamentChemistry, ElongationRateInBufferedPoolMatchesEndRates) {
 // as long as the filament never reaches its minimum size).
 TEST(FilamentChemistry, FreeMonomersRelaxToCriticalConcentration) {
   const double size = 500.0;
-  const double nv = filtest::copiesPerMicromolar(size);
+  const double nv = copiesPerMicromolar(size * size * size);
   FilamentConfig config;
   config.types = {filtest::actin()};
   const int pool = 1000, start = 100;
@@ -99,7 +99,7 @@ TEST(FilamentChemistry, FreeMonomersRelaxToCriticalConcentration) {
 //   P(b) ∝ K^b / (b! (L - b)! (N - b)!),  K = (k_on / N_A V) / k_off.
 TEST(FilamentChemistry, LinkerBoundFractionMatchesBindingEquilibrium) {
   const double size = 2000.0;
-  const double nv = filtest::copiesPerMicromolar(size);
+  const double nv = copiesPerMicromolar(size * size * size);
   FilamentConfig config;
   FilamentType t = filtest::actin();
   t.plus_on = t.plus_off = t.minus_on = t.minus_off = 0.0;

@@ -137,7 +137,7 @@ TEST(FilamentNucleation, CreatesDimersAtTheMassActionRate) {
   t.nucleation_rate = 1e-4;  // 1/(µM s)
   config.types = {t};
   const double size = 1000.0, T = 10.0;
-  const double nv = filtest::copiesPerMicromolar(size);
+  const double nv = copiesPerMicromolar(size * size * size);
   const int pool = 6000;
   Rig rig(size, {1, 1, 1}, {{"G", 0.0}}, {pool}, config, [](FilamentNetwork&) {});
   rig.engine->advance(T);
