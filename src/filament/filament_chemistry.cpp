@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "filament/boundary_energy.hpp"
+#include "filament/spring_energy.hpp"
 
 namespace cortex {
 
@@ -125,6 +127,13 @@ double FilamentChemistry::walkFactor(const MotorType& m, double tension) {
 // --- after each minimization --------------------------------------------------------------
 
 void FilamentChemistry::updateMechanochemistry(ChemistryEngine& engine) {
+  // Positions as the last minimization left them, in the layout it used.
+  const FilamentLayout& layout = net_.layout();
+  if (layout.num_beads != net_.numBeads() || layout.linkers.size() != net_.linkers().size() ||
+      layout.motors.size() != net_.motors().size())
+    throw std::logic_error("FilamentChemistry::updateMechanochemistry: the network changed since its layout");
+  x_.assign(3 * static_cast<std::size_t>(layout.bead_offset + layout.num_beads), 0.0);
+  net_.gather(x_.data());
   computeLoads();
   computeTensions();
   findCandidates();
@@ -137,16 +146,10 @@ void FilamentChemistry::computeLoads() {
   ratchet_.assign(fils.size(), {1.0, 1.0});
   load_.assign(fils.size(), {0.0, 0.0});
   // Forces on the end beads from the walls and from other filaments' cylinders (excluded
-  // volume), as the last minimization left them; the layout is that minimization's.
+  // volume).
   const FilamentLayout& layout = net_.layout();
-  const bool laid_out = layout.num_beads == net_.numBeads() && layout.cylinders.size() > 1;
-  if (laid_out) {
-    const std::size_t n = 3 * static_cast<std::size_t>(layout.bead_offset + layout.num_beads);
-    x_.assign(n, 0.0);
-    gradient_.assign(n, 0.0);
-    net_.gather(x_.data());
-    exclusion_.evaluate({x_.data(), gradient_.data(), 0});
-  }
+  gradient_.assign(x_.size(), 0.0);
+  exclusion_.evaluate({x_.data(), gradient_.data(), 0});
   const auto& boundary = net_.config().boundary;
   for (std::size_t i = 0; i < fils.size(); ++i) {
     const Filament& f = fils[i];
@@ -154,12 +157,10 @@ void FilamentChemistry::computeLoads() {
     for (int e = 0; e < 2; ++e) {
       const Vec3& tip = e ? f.beads.back() : f.beads.front();
       const Vec3 u = e ? f.plusDirection() : f.minusDirection();
-      Vec3 force = boundary ? boundaryForce(*boundary, tip) : Vec3::Zero();
-      if (laid_out) {
-        const Index bead = layout.bead_offset + net_.firstBead(static_cast<Index>(i)) +
-                           (e ? static_cast<Index>(f.beads.size()) - 1 : 0);
-        force -= Eigen::Map<const Vec3>(&gradient_[3 * static_cast<std::size_t>(bead)]);
-      }
+      const Index bead = layout.bead_offset + net_.firstBead(static_cast<Index>(i)) +
+                         (e ? static_cast<Index>(f.beads.size()) - 1 : 0);
+      const Vec3 force = (boundary ? boundaryForce(*boundary, tip) : Vec3::Zero()) -
+                         Eigen::Map<const Vec3>(&gradient_[3 * static_cast<std::size_t>(bead)]);
       // Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
       // exp(-f delta / kT); a pulling force does not speed it beyond free growth.
       const double load = std::max(0.0, -force.dot(u));
@@ -169,17 +170,17 @@ void FilamentChemistry::computeLoads() {
   }
 }
 
+// The layout's springs are the bound linkers and motors, in order.
 void FilamentChemistry::computeTensions() {
-  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor})
-    for (Binding& b : net_.bound(kind)) {
-      const double k = kind == BinderKind::kLinker ? net_.config().linkers[b.type].stiffness
-                                                   : net_.config().motors[b.type].stiffness;
-      const double l = (net_.sitePosition(kind, b.type, b.filament[1], b.site[1]) -
-                        net_.sitePosition(kind, b.type, b.filament[0], b.site[0]))
-                           .norm();
-      b.tension = k * (l - b.rest_length);
-      b.compartment = compartmentOf(net_.sitePosition(kind, b.type, b.filament[0], b.site[0]));
+  const FilamentLayout& layout = net_.layout();
+  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor}) {
+    std::vector<Binding>& bound = net_.bound(kind);
+    const std::vector<Spring>& springs = kind == BinderKind::kLinker ? layout.linkers : layout.motors;
+    for (std::size_t i = 0; i < bound.size(); ++i) {
+      bound[i].tension = springTension(springs[i], x_.data(), layout.bead_offset);
+      bound[i].compartment = compartmentOf(cylinderPoint(springs[i].a, x_.data(), layout.bead_offset));
     }
+  }
   for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
 

@@ -39,9 +39,10 @@ class FilamentChemistry final : public ReactionHook {
 
   bool fired(Index reaction, Index compartment, ChemistryEngine& engine, RandomStream& random) override;
 
-  // After a minimization (or at the start, or after a restore): recomputes end loads,
-  // spring tensions, candidate binding pairs and branching sites from the positions, then
-  // every rate factor that changed.
+  // After a minimization (or at the start, or after a restore), with the network laid out
+  // as it was minimized (std::logic_error otherwise): recomputes end loads, spring
+  // tensions, candidate binding pairs and branching sites from the positions, then every
+  // rate factor that changed.
   void updateMechanochemistry(ChemistryEngine& engine);
 
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
@@ -88,7 +89,7 @@ class FilamentChemistry final : public ReactionHook {
 
   FilamentNetwork& net_;
   CylinderExclusionEnergy exclusion_;  // its forces on the ends load the ratchet
-  std::vector<double> x_, gradient_;   // scratch for them
+  std::vector<double> x_, gradient_;   // positions at the last update, and the exclusion gradient
   CompartmentGrid grid_;
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none

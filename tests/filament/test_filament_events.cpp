@@ -120,6 +120,7 @@ TEST(FilamentMotor, StallsAtTheStallForce) {
   });
   for (int w = 1; w <= 400; ++w) {  // 20 s, far longer than the ~50 steps to stall
     rig.engine->advance(0.05 * w);
+    rig.network->layOut(0);  // as a run lays out before it relaxes
     rig.chemistry->updateMechanochemistry(*rig.engine);
   }
   const Binding& b = rig.network->motors().front();
