@@ -22,6 +22,7 @@ struct CompartmentGrid {
   Index index(int i, int j, int k) const { return (k * shape[1] + j) * shape[0] + i; }
   std::array<int, 3> coords(Index c) const { return {c % shape[0], (c / shape[0]) % shape[1], c / (shape[0] * shape[1])}; }
   double volume() const { return size * size * size; }  // nm^3
+  Vec3 extent() const { return size * Vec3(shape[0], shape[1], shape[2]); }  // nm, the box's far corner
   double copiesPerMicromolar() const { return cortex::copiesPerMicromolar(volume()); }  // in one compartment
   // Face neighbours of c (up to 6; walls are reflective, so missing ones are absent).
   int neighbours(Index c, std::array<Index, 6>& out) const;

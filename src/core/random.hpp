@@ -8,8 +8,12 @@
 
 #include <Random123/philox.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
+
+#include "core/types.hpp"
 
 namespace cortex {
 
@@ -58,5 +62,14 @@ class RandomStream {
   std::uint64_t block_[4] = {0, 0, 0, 0};
   int used_ = 4;
 };
+
+// A direction uniform on the unit sphere (uniform z and azimuth: Archimedes), from two
+// numbers of the stream.
+inline Vec3 uniformDirection(RandomStream& random) {
+  const double z = 2.0 * random.uniform() - 1.0;
+  const double phi = 2.0 * std::numbers::pi * random.uniform();
+  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+}
 
 }  // namespace cortex

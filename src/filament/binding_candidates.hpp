@@ -3,6 +3,7 @@
 // branch, each grouped by the compartment whose copies the binding consumes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -22,6 +23,11 @@ struct BindingCandidates {
   std::vector<Index> start;  // per compartment, into list; size C + 1
   std::vector<BindingCandidate> list;
   Index count(Index c) const { return start[c + 1] - start[c]; }
+  // The candidate of compartment c that u in (0, 1) picks uniformly; null if c has none.
+  const BindingCandidate* pick(Index c, double u) const {
+    const Index n = count(c);
+    return n == 0 ? nullptr : &list[start[c] + std::min<Index>(n - 1, static_cast<Index>(u * n))];
+  }
 };
 
 // Site pairs of `kind`/`type` on different filaments at a distance in [rmin, rmax] (nm),

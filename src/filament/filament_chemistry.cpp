@@ -14,13 +14,6 @@ namespace cortex {
 
 namespace {
 
-Vec3 randomDirection(RandomStream& random) {
-  const double z = 2.0 * random.uniform() - 1.0;
-  const double phi = 2.0 * constants::kPi * random.uniform();
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
 bool isBinding(FilamentReaction k) {
   return k == FilamentReaction::kLinkerBind || k == FilamentReaction::kMotorBind || k == FilamentReaction::kBranch;
 }
@@ -28,7 +21,11 @@ bool isBinding(FilamentReaction k) {
 }  // namespace
 
 FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT)
-    : net_(network), exclusion_(network.layout(), network.config().types), grid_(model.grid), kT_(kT) {
+    : net_(network),
+      exclusion_(network.layout(), network.config().types),
+      grid_(model.grid),
+      walls_(wallsOf(network.config(), Vec3::Zero(), model.grid.extent(), 0.0)),
+      kT_(kT) {
   const auto species = static_cast<Index>(model.species.size());
   auto check = [&](Index s, const std::string& what) {
     if (s < 0 || s >= species) throw InputError(fmt::format("{}: its species is not a [[species]]", what));
@@ -401,24 +398,15 @@ void FilamentChemistry::release(const std::vector<Release>& released, ChemistryE
   }
 }
 
-bool FilamentChemistry::insideBoundary(const Vec3& x) const {
-  const auto& b = net_.config().boundary;
-  if (b && b->shape == BoundaryConfig::Shape::kSphere) return (x - b->center).norm() <= b->radius;
-  const Vec3 lo = b ? b->min : Vec3::Zero();
-  const Vec3 hi = b ? b->max
-                    : Vec3(grid_.shape[0] * grid_.size, grid_.shape[1] * grid_.size, grid_.shape[2] * grid_.size);
-  return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
-}
-
 bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream& random) {
   const FilamentType& t = net_.type(ch.type);
   const auto ijk = grid_.coords(c);
   const Vec3 corner(ijk[0] * grid_.size, ijk[1] * grid_.size, ijk[2] * grid_.size);
   const Vec3 at = corner + grid_.size * Vec3(random.uniform(), random.uniform(), random.uniform());
-  Filament f = makeStraightFilament(ch.type, at, randomDirection(random), 2, t.cylinder_monomers, t.monomer_size);
+  Filament f = makeStraightFilament(ch.type, at, uniformDirection(random), 2, t.cylinder_monomers, t.monomer_size);
   // Nucleation happens only inside the boundary: thinning by the fraction of the
   // compartment that lies inside.
-  if (!insideBoundary(f.beads.front()) || !insideBoundary(f.beads.back())) return false;
+  if (!walls_.contains(f.beads.front()) || !walls_.contains(f.beads.back())) return false;
   contributeEnds(net_.addFilament(std::move(f)), 1.0);
   return true;
 }
@@ -426,10 +414,8 @@ bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream&
 bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& random) {
   const BinderKind kind = ch.kind == FilamentReaction::kMotorBind ? BinderKind::kMotor : BinderKind::kLinker;
   const BindingCandidates& cand = candidates_[&ch - channels_.data()];
-  const Index n = cand.count(c);
-  if (n == 0) return false;
-  const BindingCandidate& p =
-      cand.list[cand.start[c] + std::min<Index>(n - 1, static_cast<Index>(random.uniform() * n))];
+  if (cand.count(c) == 0) return false;
+  const BindingCandidate& p = *cand.pick(c, random.uniform());
   // The candidate list is from the last minimization: a site since lost or taken makes
   // this a void event (thinning).
   for (int e = 0; e < 2; ++e)
@@ -484,9 +470,8 @@ bool FilamentChemistry::fireWalk(const Channel& ch, Index c, RandomStream& rando
 
 bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& random) {
   const BindingCandidates& cand = candidates_[&ch - channels_.data()];
-  const Index n = cand.count(c);
-  if (n == 0) return false;
-  const BindingCandidate& site = cand.list[cand.start[c] + std::min<Index>(n - 1, static_cast<Index>(random.uniform() * n))];
+  if (cand.count(c) == 0) return false;
+  const BindingCandidate& site = *cand.pick(c, random.uniform());
   const Index mother = site.filament[0];
   if (!net_.siteExists(BinderKind::kBrancher, ch.type, mother, site.site[0]) ||
       net_.occupied(BinderKind::kBrancher, ch.type, mother, site.site[0]))
@@ -495,7 +480,7 @@ bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& ran
   const auto [cyl, w] = m.locate(net_.siteCoordinate(BinderKind::kBrancher, ch.type, site.site[0]));
   const Vec3 u = (m.beads[cyl + 1] - m.beads[cyl]).normalized();
   // Daughter direction: the branch angle away from the mother's axis, in a random plane.
-  Vec3 v = randomDirection(random);
+  Vec3 v = uniformDirection(random);
   v = (v - v.dot(u) * u).normalized();
   const double angle = net_.config().branchers[ch.type].angle * constants::kPi / 180.0;
   const Index daughter = net_.branch(ch.type, mother, site.site[0], std::cos(angle) * u + std::sin(angle) * v);

@@ -18,6 +18,7 @@
 #include "filament/binding_candidates.hpp"
 #include "filament/excluded_volume_energy.hpp"
 #include "filament/filament_network.hpp"
+#include "filament/walls.hpp"
 
 namespace cortex {
 
@@ -85,12 +86,12 @@ class FilamentChemistry final : public ReactionHook {
   bool fireBranch(const Channel& ch, Index c, RandomStream& random);
   bool fireUnbranch(const Channel& ch, Index c, RandomStream& random);
   void release(const std::vector<Release>& released, ChemistryEngine& engine);
-  bool insideBoundary(const Vec3& x) const;
 
   FilamentNetwork& net_;
   CylinderExclusionEnergy exclusion_;  // its forces on the ends load the ratchet
   std::vector<double> x_, gradient_;   // positions at the last update, and the exclusion gradient
   CompartmentGrid grid_;
+  Walls walls_;  // where nuclei may form
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none
   std::vector<Channel> channels_;

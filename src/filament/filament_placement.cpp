@@ -4,56 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/error.hpp"
+#include "filament/walls.hpp"
 
 namespace cortex {
 namespace {
 
 constexpr int kMaxTries = 100'000;
 
-// The walls shrunk by the margin: a convex set, so a straight filament is inside
-// whenever both its ends are.
-struct Walls {
-  bool sphere = false;
-  Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // box, or the sphere's bounding box
-  Vec3 center = Vec3::Zero();
-  double radius = 0.0;
-  double margin = 0.0;
-
-  bool contains(const Vec3& x) const {
-    if (sphere) return (x - center).norm() <= radius;
-    return (x.array() >= min.array()).all() && (x.array() <= max.array()).all();
-  }
-};
-
-Walls shrunkWalls(const FilamentConfig& config, const Vec3& box_min, const Vec3& box_max) {
-  const double margin = placementMargin(config);
-  Walls w;
-  w.margin = margin;
-  if (config.boundary && config.boundary->shape == BoundaryConfig::Shape::kSphere) {
-    w.sphere = true;
-    w.center = config.boundary->center;
-    w.radius = config.boundary->radius - margin;
-    w.min = w.center - Vec3::Constant(w.radius);
-    w.max = w.center + Vec3::Constant(w.radius);
-  } else {
-    w.min = (config.boundary ? config.boundary->min : box_min) + Vec3::Constant(margin);
-    w.max = (config.boundary ? config.boundary->max : box_max) - Vec3::Constant(margin);
-  }
-  return w;
-}
-
 int monomersOf(const FilamentInit& init, const FilamentType& type) {
   return std::max(1, static_cast<int>(std::lround(init.length / type.monomer_size)));
-}
-
-Vec3 randomDirection(RandomStream& random) {
-  const double z = 2.0 * random.uniform() - 1.0;
-  const double phi = 2.0 * std::numbers::pi * random.uniform();
-  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return Vec3(s * std::cos(phi), s * std::sin(phi), z);
 }
 
 bool fits(const Walls& walls, const Vec3& minus_end, const Vec3& direction, double length) {
@@ -75,7 +36,7 @@ void placeRandom(const FilamentInit& init, std::size_t entry, const FilamentType
                                      entry, n, init.count, length, walls.margin, kMaxTries));
       Vec3 minus_end;
       for (int k = 0; k < 3; ++k) minus_end[k] = lo[k] + (hi[k] - lo[k]) * random.uniform();
-      const Vec3 direction = randomDirection(random);
+      const Vec3 direction = uniformDirection(random);
       if (fits(walls, minus_end, direction, length)) {
         out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end});
         break;
@@ -131,7 +92,7 @@ double placementMargin(const FilamentConfig& config) {
 
 std::vector<FilamentSeed> placeFilaments(const FilamentConfig& config, const Vec3& box_min, const Vec3& box_max,
                                          RandomStream& random) {
-  const Walls walls = shrunkWalls(config, box_min, box_max);
+  const Walls walls = wallsOf(config, box_min, box_max, placementMargin(config));
   std::vector<FilamentSeed> seeds;
   for (std::size_t i = 0; i < config.initial.size(); ++i) {
     const FilamentInit& init = config.initial[i];

@@ -251,7 +251,7 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
   const std::vector<SpeciesDef> no_species;
   const std::vector<SpeciesDef>& species = chemistry ? chemistry->model.species : no_species;
   const CompartmentGrid grid = chemistry ? chemistry->model.grid : CompartmentGrid{};
-  const Vec3 grid_max = grid.size * Vec3(grid.shape[0], grid.shape[1], grid.shape[2]);
+  const Vec3 grid_max = grid.extent();
 
   FilamentConfig f;
   for (std::size_t i = 0; i < type_tables.size(); ++i) {

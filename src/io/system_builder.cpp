@@ -32,7 +32,7 @@ std::unique_ptr<System> buildSystem(const Config& config, const Checkpoint* rest
     if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
     // Without chemistry the grid is the default one (no [compartments] without species).
     const CompartmentGrid g = chemistry ? chemistry->model.grid : CompartmentGrid{};
-    const Vec3 box_min = Vec3::Zero(), box_max = Vec3(g.shape[0], g.shape[1], g.shape[2]) * g.size;
+    const Vec3 box_min = Vec3::Zero(), box_max = g.extent();
     std::unique_ptr<FilamentNetwork> network;
     try {
       network = buildFilamentNetwork(*config.filaments, box_min, box_max, seed,
