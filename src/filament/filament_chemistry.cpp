@@ -121,6 +121,12 @@ double FilamentChemistry::walkFactor(const MotorType& m, double tension) {
   return std::max(0.0, (m.stall_force - tension) / (m.stall_force + tension / m.hill_alpha));
 }
 
+double FilamentChemistry::maxEndLoad() const {
+  double max = 0.0;
+  for (const auto& ends : load_) max = std::max({max, ends[0], ends[1]});
+  return max;
+}
+
 // --- after each minimization --------------------------------------------------------------
 
 void FilamentChemistry::updateMechanochemistry(ChemistryEngine& engine) {

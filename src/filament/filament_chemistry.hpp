@@ -49,6 +49,7 @@ class FilamentChemistry final : public ReactionHook {
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
   double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
   double endLoad(Index f, bool plus_end) const { return load_[f][plus_end ? 1 : 0]; }
+  double maxEndLoad() const;  // pN, over every end
 
   // Force-dependent laws (exposed for tests).
   double slipFactor(const LinkerType& l, double tension) const;

@@ -165,6 +165,12 @@ Index FilamentNetwork::numBeads() const {
   return n;
 }
 
+double FilamentNetwork::totalLength() const {
+  double length = 0.0;
+  for (const Filament& f : filaments_) length += f.length();
+  return length;
+}
+
 CylinderPoint FilamentNetwork::attachment(BinderKind kind, Index type, Index filament, std::int64_t site) const {
   const auto [c, w] = filaments_[filament].locate(siteCoordinate(kind, type, site));
   return {bead_start_[filament] + c, bead_start_[filament] + c + 1, w};

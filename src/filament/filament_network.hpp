@@ -103,6 +103,7 @@ class FilamentNetwork {
 
   // --- mechanics ---------------------------------------------------------------------
   Index numBeads() const;
+  double totalLength() const;  // nm, over every filament
   // Rebuilds the layout after chemistry changed the network; bead b of the layout is
   // filament f's bead i in filament order.
   void layOut(Index bead_offset);

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <cstdio>
 
 #include "mesh/mesh_quality.hpp"
@@ -16,16 +15,10 @@ void logFilaments(const System& system) {
   const FilamentNetwork* net = system.filaments();
   if (!net) return;
   const FilamentChemistry* chem = system.filamentChemistry();
-  double length = 0.0, max_load = 0.0;
-  for (std::size_t i = 0; i < net->filaments().size(); ++i) {
-    length += net->filaments()[i].length();
-    if (chem)
-      for (const bool plus : {false, true}) max_load = std::max(max_load, chem->endLoad(static_cast<Index>(i), plus));
-  }
   spdlog::info("t = {:.6g} s, filaments: {}, total length {:.4g} um; bound: {} linkers, {} motors; {} branches; "
                "max end load {:.3g} pN",
-               system.time(), net->filaments().size(), length * 1e-3, net->linkers().size(), net->motors().size(),
-               net->branches().size(), max_load);
+               system.time(), net->filaments().size(), net->totalLength() * 1e-3, net->linkers().size(),
+               net->motors().size(), net->branches().size(), chem ? chem->maxEndLoad() : 0.0);
 }
 
 }  // namespace

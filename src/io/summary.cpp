@@ -1,6 +1,5 @@
 #include "io/summary.hpp"
 
-#include <algorithm>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -54,25 +53,19 @@ nlohmann::json filamentSummary(const System& system, const std::vector<TermEnerg
       total_energy += e.energy;
     }
   energy["total"] = total_energy;
-  double total_length = 0.0, max_load = 0.0;
-  std::int64_t monomers = 0, beads = 0;
+  std::int64_t monomers = 0;
   const auto& filaments = net->filaments();
+  for (const Filament& f : filaments) monomers += f.monomers();
+  const double total_length = net->totalLength();
   const FilamentChemistry* chem = system.filamentChemistry();
-  for (std::size_t i = 0; i < filaments.size(); ++i) {
-    total_length += filaments[i].length();
-    monomers += filaments[i].monomers();
-    beads += static_cast<std::int64_t>(filaments[i].beads.size());
-    if (chem)
-      for (const bool plus : {false, true}) max_load = std::max(max_load, chem->endLoad(static_cast<Index>(i), plus));
-  }
   const FilamentConfig& config = net->config();
   const auto count = static_cast<std::int64_t>(filaments.size());
   return {{"count", count},
-          {"beads", beads},
+          {"beads", net->numBeads()},
           {"total_length", total_length},
           {"mean_length", count > 0 ? total_length / static_cast<double>(count) : 0.0},
           {"monomers", monomers},
-          {"max_end_load", max_load},
+          {"max_end_load", chem ? chem->maxEndLoad() : 0.0},
           {"energy", energy},
           {"linkers", countByType(config.linkers, net->linkers())},
           {"motors", countByType(config.motors, net->motors())},
