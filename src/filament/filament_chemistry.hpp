@@ -89,7 +89,10 @@ class FilamentChemistry final : public ReactionHook {
   void release(const std::vector<Release>& released, ChemistryEngine& engine);
 
   FilamentNetwork& net_;
-  CylinderExclusionEnergy exclusion_;  // its forces on the ends load the ratchet
+  // Its forces on the ends load the ratchet. Not the force field's term: that one's pair
+  // list (and so its summation order) depends on where the minimization rebuilt it, and a
+  // resumed run must get the same loads from the same positions.
+  CylinderExclusionEnergy exclusion_;
   std::vector<double> x_, gradient_;   // positions at the last update, and the exclusion gradient
   CompartmentGrid grid_;
   Walls walls_;  // where nuclei may form
