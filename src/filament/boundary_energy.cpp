@@ -47,16 +47,6 @@ Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x) {
   return f;
 }
 
-const std::string& BoundaryRepulsionEnergy::name() const {
-  static const std::string kName = "boundary";
-  return kName;
-}
-
-const std::string& BoundaryRepulsionEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
-
 double BoundaryRepulsionEnergy::evaluate(const Evaluation& e) {
   const std::size_t offset = 3 * static_cast<std::size_t>(layout_.bead_offset);
   const double* x = e.x + offset;

@@ -7,7 +7,7 @@
 
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
@@ -16,16 +16,13 @@ double boundaryEnergy(const BoundaryConfig& b, const Vec3& x);
 // -dE/dx for one bead at x (pN): the load the wall puts on a growing tip.
 Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x);
 
-class BoundaryRepulsionEnergy final : public EnergyTerm {
+class BoundaryRepulsionEnergy final : public FilamentTerm {
  public:
   BoundaryRepulsionEnergy(const FilamentLayout& layout, BoundaryConfig boundary)
-      : layout_(layout), boundary_(boundary) {}
-  const std::string& name() const override;
-  const std::string& owner() const override;
+      : FilamentTerm(layout, "boundary"), boundary_(boundary) {}
   double evaluate(const Evaluation& e) override;
 
  private:
-  const FilamentLayout& layout_;
   BoundaryConfig boundary_;
 };
 

@@ -2,16 +2,6 @@
 
 namespace cortex {
 
-const std::string& BranchEnergy::name() const {
-  static const std::string kName = "branching";
-  return kName;
-}
-
-const std::string& BranchEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
-
 // Position: dE/dx_d0 = k_p r with r = x_d0 - p, and -(1-w) k_p r, -w k_p r on the mother's
 // beads. Angle: with m = mother axis, d = daughter axis and c = m.d/(|m||d|),
 // dE/dm = 2K (c - c0) (d/(|m||d|) - c m/|m|^2), and likewise for d.

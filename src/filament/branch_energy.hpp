@@ -6,19 +6,16 @@
 #include <string>
 
 #include "filament/filament_layout.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
-class BranchEnergy final : public EnergyTerm {
+class BranchEnergy final : public FilamentTerm {
  public:
-  explicit BranchEnergy(const FilamentLayout& layout) : layout_(layout) {}
-  const std::string& name() const override;
-  const std::string& owner() const override;
+  explicit BranchEnergy(const FilamentLayout& layout) : FilamentTerm(layout, "branching") {}
   double evaluate(const Evaluation& e) override;
 
  private:
-  const FilamentLayout& layout_;
 };
 
 }  // namespace cortex

@@ -71,17 +71,7 @@ SegmentClosestPoints closestPoints(const Vec3& p0, const Vec3& p1, const Vec3& q
 
 CylinderExclusionEnergy::CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
                                                  double skin)
-    : layout_(layout), types_(types), skin_(skin) {}
-
-const std::string& CylinderExclusionEnergy::name() const {
-  static const std::string kName = "excluded_volume";
-  return kName;
-}
-
-const std::string& CylinderExclusionEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
+    : FilamentTerm(layout, "excluded_volume"), types_(types), skin_(skin) {}
 
 double CylinderExclusionEnergy::displacements(const double* x) {
   if (!built_ || built_version_ != layout_.version || built_offset_ != layout_.bead_offset ||

@@ -16,7 +16,7 @@
 
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
@@ -28,12 +28,10 @@ struct SegmentClosestPoints {
 };
 SegmentClosestPoints closestPoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
-class CylinderExclusionEnergy final : public EnergyTerm {
+class CylinderExclusionEnergy final : public FilamentTerm {
  public:
   CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
                           double skin = 10.0);  // nm
-  const std::string& name() const override;
-  const std::string& owner() const override;
   double evaluate(const Evaluation& e) override;
 
   // Diagnostics, for tests and benchmarks.
@@ -51,7 +49,6 @@ class CylinderExclusionEnergy final : public EnergyTerm {
   double displacements(const double* x);
   void rebuild(const double* x);
 
-  const FilamentLayout& layout_;
   const std::vector<FilamentType>& types_;
   double skin_;
   std::vector<Pair> pairs_;

@@ -2,16 +2,6 @@
 
 namespace cortex {
 
-const std::string& FilamentBendingEnergy::name() const {
-  static const std::string kName = "bending";
-  return kName;
-}
-
-const std::string& FilamentBendingEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
-
 // With c = cos theta: dc/dt1 = t2/(|t1||t2|) - c t1/|t1|^2 and symmetrically for t2;
 // t1 depends on x1 - x0 and t2 on x2 - x1, so dE/dx0 = K dc/dt1, dE/dx2 = -K dc/dt2 and
 // dE/dx1 = -(dE/dx0 + dE/dx2). Degenerate (zero-length) hinges contribute nothing.

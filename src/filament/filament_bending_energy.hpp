@@ -7,20 +7,17 @@
 
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
-class FilamentBendingEnergy final : public EnergyTerm {
+class FilamentBendingEnergy final : public FilamentTerm {
  public:
   FilamentBendingEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types)
-      : layout_(layout), types_(types) {}
-  const std::string& name() const override;
-  const std::string& owner() const override;
+      : FilamentTerm(layout, "bending"), types_(types) {}
   double evaluate(const Evaluation& e) override;
 
  private:
-  const FilamentLayout& layout_;
   const std::vector<FilamentType>& types_;
 };
 

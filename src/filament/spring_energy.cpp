@@ -12,11 +12,6 @@ double springTension(const Spring& s, const double* x, Index bead_offset) {
   return s.stiffness * (length - s.rest_length);
 }
 
-const std::string& SpringEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
-
 // dE/dpb = -dE/dpa = k (L - l0) r/L with r = pb - pa, shared between each point's two
 // beads by its weights. A zero-length spring has no direction: no gradient.
 double SpringEnergy::evaluate(const Evaluation& e) {

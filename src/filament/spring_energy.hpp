@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "filament/filament_layout.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
@@ -17,20 +17,16 @@ Vec3 cylinderPoint(const CylinderPoint& p, const double* x, Index bead_offset);
 // unbinding and walking rates.
 double springTension(const Spring& s, const double* x, Index bead_offset);
 
-class SpringEnergy final : public EnergyTerm {
+class SpringEnergy final : public FilamentTerm {
  public:
   // `springs` is one of the layout's lists (linkers or motors), held by reference;
   // `bead_offset` is read from `layout` at each evaluation.
   SpringEnergy(const FilamentLayout& layout, const std::vector<Spring>& springs, std::string name)
-      : layout_(layout), springs_(springs), name_(std::move(name)) {}
-  const std::string& name() const override { return name_; }
-  const std::string& owner() const override;
+      : FilamentTerm(layout, std::move(name)), springs_(springs) {}
   double evaluate(const Evaluation& e) override;
 
  private:
-  const FilamentLayout& layout_;
   const std::vector<Spring>& springs_;
-  std::string name_;
 };
 
 }  // namespace cortex

@@ -2,16 +2,6 @@
 
 namespace cortex {
 
-const std::string& FilamentStretchingEnergy::name() const {
-  static const std::string kName = "stretching";
-  return kName;
-}
-
-const std::string& FilamentStretchingEnergy::owner() const {
-  static const std::string kOwner = "filaments";
-  return kOwner;
-}
-
 // dE/dx1 = -dE/dx0 = k_s (l - l0) u, u the unit axis. A zero-length cylinder has no
 // axis; its gradient is left out rather than made NaN.
 double FilamentStretchingEnergy::evaluate(const Evaluation& e) {

@@ -6,21 +6,18 @@
 
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
-#include "mech/energy_term.hpp"
+#include "filament/filament_term.hpp"
 
 namespace cortex {
 
-class FilamentStretchingEnergy final : public EnergyTerm {
+class FilamentStretchingEnergy final : public FilamentTerm {
  public:
-  // Both are held by reference: the network rebuilds the layout in place.
+  // Held by reference: the network rebuilds the layout in place.
   FilamentStretchingEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types)
-      : layout_(layout), types_(types) {}
-  const std::string& name() const override;
-  const std::string& owner() const override;
+      : FilamentTerm(layout, "stretching"), types_(types) {}
   double evaluate(const Evaluation& e) override;
 
  private:
-  const FilamentLayout& layout_;
   const std::vector<FilamentType>& types_;
 };
 
