@@ -89,13 +89,11 @@ void smoothTangentially(SurfaceMesh& m, const SurfaceProjector& project, double 
     if (m.isBoundaryVertex(v)) continue;
     Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero();
     Index count = 0;
-    Index h = m.outgoing(v);
-    do {
+    for (const Index h : m.outgoingHalfedges(v)) {
       centroid += p[m.tip(h)];
       normal += normalOf(p[v], p[m.tip(h)], p[m.tip(m.next(h))]);
       ++count;
-      h = m.rotate(h);
-    } while (h != m.outgoing(v));
+    }
     const double len = normal.norm();
     if (!(len > 0.0)) continue;  // degenerate 1-ring: leave the vertex where it is
     normal /= len;

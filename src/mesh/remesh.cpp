@@ -36,8 +36,7 @@ Vec3 smoothMidpoint(const Vec3& a, const Vec3& b, const Vec3& na, const Vec3& nb
 // containing `skip`) within the allowed normal rotation.
 bool keepsOrientation(const SurfaceMesh& m, Index v, const Vec3& to, Index skip) {
   const auto& p = m.positions();
-  Index h = m.outgoing(v);
-  do {
+  for (const Index h : m.outgoingHalfedges(v)) {
     if (!m.isBoundaryHalfedge(h)) {
       const Index b = m.tip(h), c = m.tip(m.next(h));
       if (b != skip && c != skip) {
@@ -46,8 +45,7 @@ bool keepsOrientation(const SurfaceMesh& m, Index v, const Vec3& to, Index skip)
         if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
       }
     }
-    h = m.rotate(h);
-  } while (h != m.outgoing(v));
+  }
   return true;
 }
 
@@ -84,12 +82,10 @@ Index splitLongEdges(SurfaceMesh& m, std::vector<double>& target, VertexPayload&
 
 bool collapseWouldBeHealthy(const SurfaceMesh& m, Index a, Index b, const std::vector<double>& target) {
   const auto& p = m.positions();
-  Index h = m.outgoing(a);
-  do {
+  for (const Index h : m.outgoingHalfedges(a)) {
     const Index u = m.tip(h);
     if (u != b && (p[b] - p[u]).norm() > kSplitAbove * edgeTarget(target, b, u)) return false;
-    h = m.rotate(h);
-  } while (h != m.outgoing(a));
+  }
   return keepsOrientation(m, a, p[b], b);
 }
 
@@ -138,14 +134,12 @@ Index relocate(SurfaceMesh& m, const VertexPayload& payload) {
     if (m.isBoundaryVertex(v) || isFixed(payload, v)) return;
     Vec3 centroid = Vec3::Zero();
     double weight = 0.0;
-    Index h = m.outgoing(v);
-    do {
+    for (const Index h : m.outgoingHalfedges(v)) {
       const Index b = m.tip(h), c = m.tip(m.next(h));
       const double area = faceNormal(p[v], p[b], p[c]).norm();
       centroid += area * (p[v] + p[b] + p[c]) / 3.0;
       weight += area;
-      h = m.rotate(h);
-    } while (h != m.outgoing(v));
+    }
     if (!(weight > 0)) return;
     Vec3 shift = centroid / weight - p[v];
     shift -= normals[v] * normals[v].dot(shift);

@@ -16,12 +16,10 @@ void smoothOverRings(const SurfaceMesh& m, const std::vector<double>& area, std:
     std::vector<double> smoothed(m.numVertices());
     for (Index v = 0; v < m.numVertices(); ++v) {
       double sum = area[v] * field[v], weight = area[v];
-      Index h = m.outgoing(v);
-      do {
+      for (const Index h : m.outgoingHalfedges(v)) {
         sum += area[m.tip(h)] * field[m.tip(h)];
         weight += area[m.tip(h)];
-        h = m.rotate(h);
-      } while (h != m.outgoing(v));
+      }
       smoothed[v] = weight > 0 ? sum / weight : field[v];
     }
     field.swap(smoothed);
@@ -41,12 +39,10 @@ std::vector<double> largestPrincipalCurvature(const SurfaceMesh& m) {
     const VertexCurvature k = vertexCurvature(m, v);
     area[v] = k.area;
     gaussian[v] = k.gaussian;
-    Index h = m.outgoing(v);
-    do {
+    for (const Index h : m.outgoingHalfedges(v)) {
       const Vec3 d = p[v] - p[m.tip(h)];
       if (d.squaredNorm() > 0) mean[v] += (normals[v] - normals[m.tip(h)]).dot(d) / d.squaredNorm() / m.valence(v);
-      h = m.rotate(h);
-    } while (h != m.outgoing(v));
+    }
   }
   smoothOverRings(m, area, mean);
   smoothOverRings(m, area, gaussian);
@@ -72,21 +68,17 @@ std::vector<double> sizingField(const SurfaceMesh& m, const SizingParameters& s)
   // Boundary vertices have no reliable curvature: take the finest interior neighbour.
   for (Index v = 0; v < m.numVertices(); ++v) {
     if (!m.isBoundaryVertex(v)) continue;
-    Index h = m.outgoing(v);
-    do {
+    for (const Index h : m.outgoingHalfedges(v)) {
       if (!m.isBoundaryVertex(m.tip(h))) target[v] = std::min(target[v], target[m.tip(h)]);
-      h = m.rotate(h);
-    } while (h != m.outgoing(v));
+    }
   }
   const auto& p = m.positions();
   for (int sweep = 0; sweep < 3; ++sweep)
     for (Index v = 0; v < m.numVertices(); ++v) {
-      Index h = m.outgoing(v);
-      do {
+      for (const Index h : m.outgoingHalfedges(v)) {
         const Index u = m.tip(h);
         target[v] = std::min(target[v], target[u] + s.gradation * (p[v] - p[u]).norm());
-        h = m.rotate(h);
-      } while (h != m.outgoing(v));
+      }
     }
   return target;
 }

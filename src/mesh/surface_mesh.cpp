@@ -142,12 +142,9 @@ SurfaceMesh SurfaceMesh::fromSoup(const TriangleSoup& soup, const std::string& s
 
 Index SurfaceMesh::valence(Index v) const {
   Index count = 0;
-  const Index h0 = vertex_out_[v];
-  Index h = h0;
-  do {
-    ++count;
-    h = rotate(h);
-  } while (h != h0 && count <= numHalfedges());
+  // The bound stops a circulation that never closes (a corrupt mesh under validate()).
+  for ([[maybe_unused]] const Index h : outgoingHalfedges(v))
+    if (++count > numHalfedges()) break;
   return count;
 }
 
@@ -168,11 +165,9 @@ bool SurfaceMesh::isFlippable(Index h) const {
   const Index a = tail(h), b = he_tip_[h];
   const Index c = he_tip_[he_next_[h]], d = he_tip_[he_next_[t]];
   if (c == d || valence(a) <= 3 || valence(b) <= 3) return false;
-  Index g = vertex_out_[c];
-  do {
+  for (const Index g : outgoingHalfedges(c)) {
     if (he_tip_[g] == d) return false;  // c-d exists already: flipping would duplicate it
-    g = rotate(g);
-  } while (g != vertex_out_[c]);
+  }
   return true;
 }
 

@@ -42,6 +42,33 @@ class SurfaceMesh {
   bool isBoundaryVertex(Index v) const { return isBoundaryHalfedge(vertex_out_[v]); }
   // Next outgoing half-edge of the same vertex, turning around it.
   Index rotate(Index h) const { return he_twin_[he_prev_[h]]; }
+  // The outgoing half-edges of v, from outgoing(v) turning around it with rotate():
+  //   for (Index h : mesh.outgoingHalfedges(v)) ...
+  // Reads only twin and prev links, so it may be used while tips are rewritten.
+  class Circulator {
+   public:
+    Circulator(const SurfaceMesh& mesh, Index start, bool done) : mesh_(&mesh), h_(start), start_(start), done_(done) {}
+    Index operator*() const { return h_; }
+    Circulator& operator++() {
+      h_ = mesh_->rotate(h_);
+      done_ = h_ == start_;
+      return *this;
+    }
+    bool operator!=(const Circulator& other) const { return done_ != other.done_; }
+
+   private:
+    const SurfaceMesh* mesh_;
+    Index h_, start_;
+    bool done_;
+  };
+  struct HalfedgeRing {
+    Circulator first, last;
+    Circulator begin() const { return first; }
+    Circulator end() const { return last; }
+  };
+  HalfedgeRing outgoingHalfedges(Index v) const {
+    return {Circulator(*this, vertex_out_[v], false), Circulator(*this, vertex_out_[v], true)};
+  }
   Index valence(Index v) const;
 
   Index faceHalfedge(Index f) const { return face_he_[f]; }

@@ -89,18 +89,12 @@ bool SurfaceMesh::isCollapsible(Index h) const {
   }
   // Link condition: a and b may share no neighbour but c and d.
   std::vector<Index> around_b;
-  Index g = vertex_out_[b];
-  do {
-    around_b.push_back(he_tip_[g]);
-    g = rotate(g);
-  } while (g != vertex_out_[b]);
-  g = vertex_out_[a];
-  do {
+  for (const Index g : outgoingHalfedges(b)) around_b.push_back(he_tip_[g]);
+  for (const Index g : outgoingHalfedges(a)) {
     const Index n = he_tip_[g];
     if (n != c && n != d && n != b && std::find(around_b.begin(), around_b.end(), n) != around_b.end())
       return false;
-    g = rotate(g);
-  } while (g != vertex_out_[a]);
+  }
   return true;
 }
 
@@ -113,11 +107,9 @@ bool SurfaceMesh::collapse(Index h) {
   const Index o1 = he_twin_[h1], o2 = he_twin_[h2], o3 = he_twin_[t1], o4 = he_twin_[t2];
 
   // Every half-edge arriving at a now arrives at b.
-  Index g = vertex_out_[a];
-  do {
+  for (const Index g : outgoingHalfedges(a)) {
     he_tip_[he_twin_[g]] = b;
-    g = rotate(g);
-  } while (g != vertex_out_[a]);
+  }
   // The two triangles go; their outer edges pair up across them.
   he_twin_[o1] = o2, he_twin_[o2] = o1;
   he_twin_[o3] = o4, he_twin_[o4] = o3;

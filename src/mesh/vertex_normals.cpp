@@ -28,9 +28,7 @@ VertexCurvature vertexCurvature(const SurfaceMesh& m, Index v) {
   const auto& p = m.positions();
   Vec3 area_gradient = Vec3::Zero(), normal = Vec3::Zero();
   double area = 0.0, angles = 0.0;
-  const Index start = m.outgoing(v);
-  Index h = start;
-  do {
+  for (const Index h : m.outgoingHalfedges(v)) {
     if (!m.isBoundaryHalfedge(h)) {
       const Vec3& a = p[v];
       const Vec3& b = p[m.tip(h)];
@@ -44,8 +42,7 @@ VertexCurvature vertexCurvature(const SurfaceMesh& m, Index v) {
         angles += std::atan2(len, (b - a).dot(c - a));
       }
     }
-    h = m.rotate(h);
-  } while (h != start);
+  }
   VertexCurvature k;
   k.normal = normal.norm() > 0 ? Vec3(normal.normalized()) : Vec3::Zero();
   k.area = area;
