@@ -1,6 +1,6 @@
-// The actomyosin benchmark of ../shared/BENCHMARKS.md (MEDYAN's 50filaments_motor_linker:
-// 20 s simulated in 28.6 s wall and 2.46 GB on this machine class). Runs
-// bench/actomyosin_50filaments.toml through the real loop (no files written) and reports
+// The actomyosin benchmark of docs/benchmarks.md (MEDYAN's 50filaments_motor_linker:
+// 20 s simulated in 28.6 s wall and 2.46 GB on this machine class). Runs the scenario
+// (actomyosin_scenario.hpp) through the real loop (no files written) and reports
 // simulated seconds per wall second, peak memory, and where the time went: chemistry
 // (engine incl. filament events), mechanics (force evaluations and the excluded-volume
 // neighbour list they rebuild), and the force-dependent rate update after each
@@ -10,8 +10,7 @@
 
 #include <chrono>
 
-#include "io/config.hpp"
-#include "io/system_builder.hpp"
+#include "actomyosin_scenario.hpp"
 #include "sim/simulation.hpp"
 
 namespace cortex {
@@ -24,13 +23,13 @@ double peakResidentMegabytes() {
 }
 
 void BM_Actomyosin50Filaments(benchmark::State& state) {
-  const Config config = loadConfig(CORTEX_SOURCE_DIR "/bench/actomyosin_50filaments.toml", {});
+  const Config config = bench::actomyosin50Filaments();
   RunObserver quiet;
   double simulated = 0.0, wall = 0.0;
   RunCounters counters;
   std::int64_t events = 0, evaluations = 0;
   for (auto _ : state) {
-    auto system = buildSystem(config, nullptr);
+    auto system = std::make_unique<System>(config);
     Simulation sim(*system, config.simulation, config.mechanics, quiet);
     const auto start = std::chrono::steady_clock::now();
     sim.run(true);

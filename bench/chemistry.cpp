@@ -20,8 +20,7 @@ namespace {
 
 ChemistryModel diffusionModel(int n) {
   ChemistryModel m;
-  m.grid.size = 100.0;
-  m.grid.shape = {n, n, n};
+  m.volumes = gridGraph(CompartmentGrid{100.0, {n, n, n}});
   m.species.push_back({"A", 1.0e6});
   return m;
 }
@@ -30,15 +29,16 @@ ChemistryModel diffusionModel(int n) {
 // dimerizations and exchanges, none of which creates copies, so the network is ergodic.
 ChemistryModel denseNetwork(int num_species, int num_reactions) {
   ChemistryModel m;
+  std::vector<ReactionDef> reactions;
   for (int s = 0; s < num_species; ++s) m.species.push_back({"X" + std::to_string(s), 0.0});
   RandomStream rng(12345, StreamId::kInitialConditions);
   const auto pick = [&] { return "X" + std::to_string(static_cast<int>(rng.uniform() * num_species)); };
   for (int s = 0; s < num_species; ++s) {
     const std::string x = "X" + std::to_string(s);
-    m.reactions.push_back(parseReaction("-> " + x, 0.5, m.species));  // µM/s: ~38 copies/s
-    m.reactions.push_back(parseReaction(x + " ->", 1.0, m.species));
+    reactions.push_back(parseReaction("-> " + x, 0.5, m.species));  // µM/s: ~38 copies/s
+    reactions.push_back(parseReaction(x + " ->", 1.0, m.species));
   }
-  while (static_cast<int>(m.reactions.size()) < num_reactions) {
+  while (static_cast<int>(reactions.size()) < num_reactions) {
     // Separate statements: the operands of + are evaluated in unspecified order.
     const double u = rng.uniform();
     const double rate = 0.2 + rng.uniform();
@@ -53,8 +53,9 @@ ChemistryModel denseNetwork(int num_species, int num_reactions) {
       eq = "2 " + x[0] + " -> " + x[1];
     else
       eq = x[0] + " + " + x[1] + " -> " + x[2] + " + " + x[3];
-    m.reactions.push_back(parseReaction(eq, rate, m.species));
+    reactions.push_back(parseReaction(eq, rate, m.species));
   }
+  m.addReactions("benchmark", std::move(reactions));
   return m;
 }
 
@@ -71,7 +72,7 @@ void run(benchmark::State& state, EngineKind kind, const ChemistryModel& model, 
 
 void BM_Diffusion(benchmark::State& state, EngineKind kind, int n, double window) {
   const ChemistryModel m = diffusionModel(n);
-  run(state, kind, m, std::vector<int>(m.grid.count(), 8), window);
+  run(state, kind, m, std::vector<int>(m.volumes.count(), 8), window);
 }
 BENCHMARK_CAPTURE(BM_Diffusion, nsm_10cubed, EngineKind::kNextSubvolume, 10, 0.05)
     ->UseRealTime()

@@ -37,14 +37,13 @@ constexpr double kMtEdge = 37.0;  // nm
 MembraneMechanics vesicleMechanics(bool with_regularization,
                                    CurvatureEstimator estimator = CurvatureEstimator::kUnsigned) {
   MembraneMechanics m;
-  m.bending_modulus = Schedule(100.0);
   // Unsigned: what a config with spontaneous_curvature = 0 gets by default (io/config.cpp).
-  m.curvature = estimator;
-  m.area_modulus = Schedule(400.0);
-  m.tension = Schedule(0.02);
-  m.volume_modulus = Schedule(0.8);
+  m.bending = {Schedule(100.0), Schedule(0.0), estimator};
+  m.area.modulus = Schedule(400.0);
+  m.tension.tension = Schedule(0.02);
+  m.volume.modulus = Schedule(0.8);
   // Only for the regularization term's own benchmark; a typical vesicle runs without it.
-  if (with_regularization) m.regularization = Schedule(0.1);  // pN·nm per triangle
+  if (with_regularization) m.regularization.strength = Schedule(0.1);  // pN·nm per triangle
   return m;
 }
 
@@ -68,6 +67,19 @@ std::unique_ptr<Membrane> makeMembrane(MeshKind kind, bool with_regularization,
   return std::make_unique<Membrane>("vesicle",
                                     SurfaceMesh::fromSoup(sphereSoup(kind), "bench sphere"),
                                     vesicleMechanics(with_regularization, estimator), std::vector<char>{});
+}
+
+// A System of one vesicle with the given mesh, as a run assembles it.
+Config vesicleConfig(const TriangleSoup& soup) {
+  Config c;
+  c.source = "benchmark";
+  MembraneConfig m;
+  m.name = "vesicle";
+  m.shape = "mesh";
+  m.soup = soup;
+  m.mechanics = vesicleMechanics(false);
+  c.membranes.push_back(m);
+  return c;
 }
 
 // Every coordinate moved by up to `amplitude` nm: breaks the sphere's symmetry so no
@@ -108,13 +120,14 @@ void geometryBench(benchmark::State& state, MeshKind kind) {
 // the cache stale on each call): when a term is the only one in a force field, that is
 // what it costs; in the full field the geometry is shared, so per-term times do not add up
 // to the full field's. The gradient is zeroed every call, as ForceField does.
-template <class Term>
-void termBench(benchmark::State& state, MeshKind kind, CurvatureEstimator estimator) {
+template <class Term, class Parameters>
+void termBench(benchmark::State& state, MeshKind kind, CurvatureEstimator estimator,
+               Parameters MembraneMechanics::*parameters) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   const auto membrane = makeMembrane(kind, true, estimator);
   const Eigen::VectorXd x = perturbed(coordinatesOf(*membrane), 2.0);
   Eigen::VectorXd gradient(x.size());
-  Term term(*membrane);
+  Term term(*membrane, membrane->mechanics().*parameters);
   std::uint64_t version = 0;
   for (auto _ : state) {
     gradient.setZero();
@@ -128,9 +141,7 @@ void termBench(benchmark::State& state, MeshKind kind, CurvatureEstimator estima
 // volume, sharing one geometry computation per call.
 void fieldBench(benchmark::State& state, MeshKind kind, bool with_gradient) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  std::vector<std::unique_ptr<Membrane>> membranes;
-  membranes.push_back(makeMembrane(kind, false));
-  System system(std::move(membranes));
+  System system(vesicleConfig(sphereSoup(kind)));
   const Eigen::VectorXd x = perturbed(system.coordinates(), 2.0);
   Eigen::VectorXd gradient(x.size());
   ForceField& field = system.forceField();
@@ -149,11 +160,7 @@ void fieldBench(benchmark::State& state, MeshKind kind, bool with_gradient) {
 // long-wavelength mode, the slow kind for CG and L-BFGS.
 void minimizeBench(benchmark::State& state, MinimizerKind kind, double stretch) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  std::vector<std::unique_ptr<Membrane>> membranes;
-  membranes.push_back(std::make_unique<Membrane>(
-      "vesicle", SurfaceMesh::fromSoup(icosphere(Vec3::Zero(), 800.0, 4), "bench sphere"),
-      vesicleMechanics(false), std::vector<char>{}));
-  System system(std::move(membranes));
+  System system(vesicleConfig(icosphere(Vec3::Zero(), 800.0, 4)));
   Eigen::VectorXd start = perturbed(system.coordinates(), 2.0);
   for (Eigen::Index i = 0; i < start.size(); i += 3) start[i] *= stretch;
   ForceField& field = system.forceField();
@@ -187,11 +194,12 @@ void threaded(benchmark::internal::Benchmark* b) {
   b->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMicrosecond);
 }
 
-template <class Term>
-void registerTerm(const std::string& name, MeshKind kind,
+template <class Term, class Parameters>
+void registerTerm(const std::string& name, MeshKind kind, Parameters MembraneMechanics::*parameters,
                   CurvatureEstimator estimator = CurvatureEstimator::kUnsigned) {
-  threaded(benchmark::RegisterBenchmark(("term/" + name + "/" + meshName(kind)).c_str(),
-                                        [kind, estimator](benchmark::State& s) { termBench<Term>(s, kind, estimator); }));
+  threaded(benchmark::RegisterBenchmark(
+      ("term/" + name + "/" + meshName(kind)).c_str(),
+      [kind, estimator, parameters](benchmark::State& s) { termBench<Term>(s, kind, estimator, parameters); }));
 }
 
 void registerAll() {
@@ -199,13 +207,13 @@ void registerAll() {
     const std::string mesh = meshName(kind);
     threaded(benchmark::RegisterBenchmark(("geometry/" + mesh).c_str(),
                                           [kind](benchmark::State& s) { geometryBench(s, kind); }));
-    registerTerm<BendingEnergy>("bending", kind);
-    registerTerm<BendingEnergy>("bending_signed", kind, CurvatureEstimator::kSigned);
-    registerTerm<GlobalAreaEnergy>("area_global", kind);
-    registerTerm<PerVertexAreaEnergy>("area_per_vertex", kind);
-    registerTerm<TensionEnergy>("tension", kind);
-    registerTerm<VolumeEnergy>("volume", kind);
-    registerTerm<RegularizationEnergy>("regularization", kind);
+    registerTerm<BendingEnergy>("bending", kind, &MembraneMechanics::bending);
+    registerTerm<BendingEnergy>("bending_signed", kind, &MembraneMechanics::bending, CurvatureEstimator::kSigned);
+    registerTerm<GlobalAreaEnergy>("area_global", kind, &MembraneMechanics::area);
+    registerTerm<PerVertexAreaEnergy>("area_per_vertex", kind, &MembraneMechanics::area);
+    registerTerm<TensionEnergy>("tension", kind, &MembraneMechanics::tension);
+    registerTerm<VolumeEnergy>("volume", kind, &MembraneMechanics::volume);
+    registerTerm<RegularizationEnergy>("regularization", kind, &MembraneMechanics::regularization);
     threaded(benchmark::RegisterBenchmark(("field/energy+gradient/" + mesh).c_str(),
                                           [kind](benchmark::State& s) { fieldBench(s, kind, true); }));
     threaded(benchmark::RegisterBenchmark(("field/energy_only/" + mesh).c_str(),

@@ -59,22 +59,23 @@ void BM_RemeshPass(benchmark::State& state) {
 BENCHMARK(BM_RemeshPass)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_FullMinimization(benchmark::State& state) {
-  MembraneMechanics mech;
-  mech.bending_modulus = Schedule(100.0);
-  mech.curvature = CurvatureEstimator::kUnsigned;
-  mech.area_modulus = Schedule(400.0);
-  mech.volume_modulus = Schedule(0.8);
-  mech.reduced_volume = Schedule(0.9);
+  Config config;
+  config.source = "benchmark";
+  MembraneConfig& m = config.membranes.emplace_back();
+  m.name = "v";
+  m.shape = "mesh";
+  m.soup = squashedVesicle();
+  m.mechanics.bending = {Schedule(100.0), Schedule(0.0), CurvatureEstimator::kUnsigned};
+  m.mechanics.area.modulus = Schedule(400.0);
+  m.mechanics.volume.modulus = Schedule(0.8);
+  m.mechanics.volume.reduced_volume = Schedule(0.9);
   MinimizerSettings settings;
   settings.kind = MinimizerKind::kLbfgs;
   settings.force_tolerance = 0.5;
   long evaluations = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    std::vector<std::unique_ptr<Membrane>> membranes;
-    membranes.push_back(std::make_unique<Membrane>(
-        "v", SurfaceMesh::fromSoup(squashedVesicle(), "bench"), mech, std::vector<char>{}));
-    System system(std::move(membranes));
+    System system(config);
     Eigen::VectorXd x = system.coordinates();
     state.ResumeTiming();
     minimize(system.forceField(), x, settings);

@@ -1,13 +1,15 @@
-// The exact stochastic engine: reactions in every compartment and diffusion hops between
-// face neighbours (rate D/h^2 per copy and face), fired one event at a time.
+// The exact stochastic engine: reactions in every subvolume and diffusion hops along the
+// edges of the subvolume graphs, fired one event at a time.
 //
 // Two implementations share this interface and one test body: the next-subvolume method
-// (Elf & Ehrenberg 2004: per-compartment propensity sums in an indexed priority queue,
-// so the cost per event grows only with log(compartments)) for real runs, and Gillespie's
+// (Elf & Ehrenberg 2004: per-subvolume propensity sums in an indexed priority queue, so
+// the cost per event grows only with log(subvolumes)) for real runs, and Gillespie's
 // direct method over all channels, simple enough to trust, for tests to compare against.
+//
+// Subvolumes are numbered region by region: the 3D ones (ChemistryModel::volumes) first,
+// then each surface's (given by setSurface) in the order of ChemistryModel::surfaces.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -21,11 +23,53 @@ namespace cortex {
 
 enum class EngineKind { kNextSubvolume, kDirect };
 
+// An engine's whole state between advances (see ChemistryEngine): what a checkpoint
+// stores. Surface copies are not in it: they belong to their membranes.
+struct ChemistryState {
+  Index species = 0;        // copies per subvolume
+  std::vector<int> copies;  // over the 3D subvolumes, [i * species + s]
+  std::uint64_t random_counter = 0;
+  int random_used = 4;
+  double time = 0.0;
+  std::int64_t events = 0, diffusion_events = 0;
+  std::vector<std::int64_t> reaction_events;
+
+  // f(name, field) for every scalar field (checkpoints).
+  template <class Self, class F>
+  static void fields(Self& s, F&& f) {
+    f("random_counter", s.random_counter);
+    f("random_used", s.random_used);
+    f("time", s.time);
+    f("events", s.events);
+    f("diffusion_events", s.diffusion_events);
+  }
+};
+
+class ChemistryEngine;
+
+// The one writer of a reaction range's rate factors (ChemistryEngine::claimRateFactors).
+// A rate factor scales reaction r's propensity in one subvolume (mechanochemical
+// feedback, reactions restricted to a region); it is 1 until set.
+class RateFactors {
+ public:
+  RateFactors() = default;
+  // `reaction` is a model index inside range(); throws std::out_of_range otherwise, and
+  // std::invalid_argument for a factor that is negative or not finite.
+  void set(Index reaction, Index subvolume, double factor) const;
+  const ReactionRange& range() const { return range_; }
+
+ private:
+  friend class EngineBase;
+  RateFactors(ChemistryEngine* engine, ReactionRange range) : engine_(engine), range_(std::move(range)) {}
+  ChemistryEngine* engine_ = nullptr;
+  ReactionRange range_;
+};
+
 // Between advances an engine keeps no pending event times (waiting times are
 // exponential, hence memoryless, so they are drawn afresh at the start of every
 // advance): its whole state is the copies, the rate factors, the time and the random
-// stream. That is what a checkpoint stores, and why setCopies/setRateFactor between
-// advances are exact.
+// stream. That is what a checkpoint stores, and why every setter between advances is
+// exact.
 class ChemistryEngine {
  public:
   virtual ~ChemistryEngine() = default;
@@ -34,35 +78,47 @@ class ChemistryEngine {
   virtual void advance(double t_end) = 0;
   virtual double time() const = 0;
 
-  // Copies of `species` in `compartment`. Setting them between advances updates only
-  // the propensities that depend on them.
-  virtual int copies(Index compartment, Index species) const = 0;
-  virtual void setCopies(Index compartment, Index species, int n) = 0;
-  // Scales reaction r's propensity in one compartment (mechanochemical feedback,
-  // partial compartments); 1 by default.
-  virtual void setRateFactor(Index reaction, Index compartment, double factor) = 0;
+  virtual Index numSubvolumes() const = 0;
+  // Subvolumes of region k (0: 3D, k >= 1: surface k - 1) are [regionStart(k), regionStart(k + 1)).
+  virtual Index regionStart(Index region) const = 0;
 
-  // Confines `species` to one side of a membrane (thesis 2.2.4.2). Per compartment,
-  // `volume` is the fraction of its volume on that side and `faces` the fractions of its
-  // faces' areas (-x, +x, -y, +y, -z, +z) on that side; a shared face must get the same
-  // value from both compartments (CompartmentSlices does this). Then the per-copy hop
-  // rate through a face is D/h^2 * a_face / f_source (V_i d_ij symmetric, so the
-  // stationary distribution is uniform in the confined volume); compartments with
-  // f = 0 are inactive: no hops in or out. Propensities of reactions whose species are
-  // confined (their first reactant, or first product for order 0, decides) scale by f
-  // (order 0), 1 (order 1) or 1/f (order 2), per-site reactions (ReactionDef::per_site)
-  // by f^-order, and all are 0 where f = 0. Copies sitting in a
-  // compartment that becomes inactive move to the nearest active one (breadth first over
-  // face neighbours, ties by compartment index and face order), so none is lost; throws
-  // std::runtime_error if they have nowhere to go, std::invalid_argument for fractions
-  // outside [0, 1] or of the wrong size. Call between advances; only compartments whose
-  // rates changed are recomputed. Unconfined species (the default) behave as f = a = 1.
-  virtual void setConfinement(Index species, const std::vector<double>& volume,
-                              const std::vector<std::array<double, 6>>& faces) = 0;
+  // Copies of `species` in `subvolume`. Setting them between advances updates only the
+  // propensities that depend on them.
+  virtual int copies(Index subvolume, Index species) const = 0;
+  virtual void setCopies(Index subvolume, Index species, int n) = 0;
 
-  // Who carries out hooked reactions (not owned; must outlive the engine's advances).
-  // A model with hooked reactions and no hook fires them as plain mass action.
-  virtual void setReactionHook(ReactionHook* hook) = 0;
+  // The rate factors of `range` (one of the model's ranges), to its owner alone: throws
+  // std::logic_error if the range is unknown or claimed already.
+  virtual RateFactors claimRateFactors(const ReactionRange& range) = 0;
+
+  // Who carries out the reactions of `range` (not owned; must outlive the engine's
+  // advances). Reactions without a hook fire as plain mass action.
+  virtual void setReactionHook(const ReactionRange& range, ReactionHook* hook) = 0;
+
+  // Confines the 3D `species` to one side of a membrane (thesis 2.2.4.2). Per 3D
+  // subvolume, `volume` is the fraction of its volume on that side, and per directed edge
+  // of the 3D graph `edges` the fraction of the contact area on that side; an edge and
+  // its reverse must get the same value (CompartmentSlices does this). Then the per-copy
+  // hop rate along an edge is D/l^2 * a / f_source (size * rate stays symmetric, so the
+  // stationary distribution is uniform in the confined volume); subvolumes with f = 0 are
+  // inactive: no hops in or out. Propensities of 3D reactions whose species are confined
+  // (their first reactant, or first product for order 0, decides) scale by f (order 0),
+  // 1 (order 1) or 1/f (order 2), per-site reactions (ReactionDef::per_site) by f^-order,
+  // surface reactions by 1/f per 3D reactant in their holder, and all are 0 where f = 0.
+  // Copies sitting in a subvolume that becomes inactive move to the nearest active one
+  // (breadth first along edges, ties by subvolume index and edge order), so none is lost;
+  // throws std::runtime_error if they have nowhere to go, std::invalid_argument for
+  // fractions outside [0, 1] or of the wrong size. Only subvolumes whose rates changed
+  // are recomputed. Unconfined species (the default) behave as f = a = 1.
+  virtual void setConfinement(Index species, const std::vector<double>& volume, const std::vector<double>& edges) = 0;
+
+  // Replaces the subvolumes of `surface` (a remeshed membrane): `graph` its dual cells,
+  // `holders` the 3D subvolume holding each, `copies` the copies in each (subvolume-major,
+  // [i * species + s]; non-zero only for that surface's species), carried over by the
+  // caller so that none is lost. Rate factors of its reactions there restart at 1.
+  // Throws InputError for an inconsistent graph, std::invalid_argument for bad sizes.
+  virtual void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
+                          const std::vector<int>& copies) = 0;
 
   virtual std::int64_t events() const = 0;
   // Events fired per reaction (index as in the model); diffusion hops counted apart.
@@ -71,11 +127,17 @@ class ChemistryEngine {
 
   // The random stream and clock, for checkpoints.
   virtual const RandomStream& random() const = 0;
-  virtual void restore(const RandomStream& stream, double time, std::int64_t events,
-                       const std::vector<std::int64_t>& reaction_events, std::int64_t diffusion_events) = 0;
+  virtual ChemistryState state() const = 0;
+  // Continues from a state: its copies (throws std::invalid_argument unless there is one
+  // per 3D subvolume and species), clock, stream and counters.
+  virtual void restore(const ChemistryState& state) = 0;
+
+ private:
+  friend class RateFactors;
+  virtual void setRateFactor(Index reaction, Index subvolume, double factor) = 0;
 };
 
-// `copies` is compartment-major: copies[c * species + s].
+// `copies` is subvolume-major over the 3D subvolumes: copies[i * species + s].
 std::unique_ptr<ChemistryEngine> makeChemistryEngine(EngineKind kind, const ChemistryModel& model,
                                                      const std::vector<int>& copies, std::uint64_t seed);
 

@@ -9,29 +9,6 @@
 
 namespace cortex {
 
-int CompartmentGrid::neighbours(Index c, std::array<Index, 6>& out) const {
-  const auto [i, j, k] = coords(c);
-  const Index sx = 1, sy = shape[0], sz = shape[0] * shape[1];
-  int n = 0;
-  if (i > 0) out[n++] = c - sx;
-  if (i + 1 < shape[0]) out[n++] = c + sx;
-  if (j > 0) out[n++] = c - sy;
-  if (j + 1 < shape[1]) out[n++] = c + sy;
-  if (k > 0) out[n++] = c - sz;
-  if (k + 1 < shape[2]) out[n++] = c + sz;
-  return n;
-}
-
-Index CompartmentGrid::locate(const Vec3& x) const {
-  std::array<int, 3> ijk{};
-  for (int a = 0; a < 3; ++a) {
-    const double u = std::floor(x[a] / size);
-    // Written so that NaN lands in the first compartment instead of reaching the cast.
-    ijk[a] = u >= 0.0 ? static_cast<int>(std::min(u, static_cast<double>(shape[a] - 1))) : 0;
-  }
-  return index(ijk[0], ijk[1], ijk[2]);
-}
-
 int ReactionDef::order() const {
   int n = 0;
   for (const Stoichiometry& s : reactants) n += s.count;
@@ -115,15 +92,22 @@ ReactionDef parseReaction(const std::string& equation, double rate, const std::v
   return r;
 }
 
-double stochasticRateConstant(const ReactionDef& reaction, double volume_nm3) {
+ReactionRange ChemistryModel::addReactions(const std::string& owner, std::vector<ReactionDef> defs) {
+  ReactionRange range{owner, static_cast<Index>(reactions.size()), static_cast<Index>(reactions.size() + defs.size())};
+  for (ReactionDef& d : defs) reactions.push_back(std::move(d));
+  ranges.push_back(range);
+  return range;
+}
+
+double stochasticRateConstant(double rate, int order, double volume_nm3) {
   const double nv = copiesPerMicromolar(volume_nm3);
-  switch (reaction.order()) {
+  switch (order) {
     case 0:
-      return reaction.rate * nv;
+      return rate * nv;
     case 1:
-      return reaction.rate;
+      return rate;
     default:
-      return reaction.rate / nv;  // A + B and 2 A alike: h = n_A n_B or n (n - 1)
+      return rate / nv;  // A + B and 2 A alike: h = n_A n_B or n (n - 1)
   }
 }
 

@@ -1,42 +1,27 @@
-// What the chemistry engine simulates: a grid of cubic compartments, diffusing species,
-// and mass-action reactions, all in cortex units (nm, s, µM).
+// What the chemistry engine simulates: subvolumes (a graph), species living on them, and
+// mass-action reactions, all in cortex units (nm, s, µM).
+//
+// Regions: region 0 is the 3D space (`volumes`, e.g. a compartment grid); region k >= 1 is
+// the surface of membrane surfaces[k-1], whose subvolumes (the dual cells of its vertices)
+// are handed to the engine at run time and replaced whenever the mesh is remeshed
+// (ChemistryEngine::setSurface). A species lives in one region. A reaction fires in the
+// region of its surface species if it has any (all on one surface), else in the 3D space;
+// its 3D species are then those of the compartment that holds the surface subvolume.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
+#include "chem/compartment_grid.hpp"
+#include "chem/subvolume_graph.hpp"
 #include "core/types.hpp"
 
 namespace cortex {
 
-// Avogadro's number in cortex units: copies per µM per fL (1 fL = 1 µm³ = 1e9 nm³).
-inline constexpr double kCopiesPerMicromolarFemtoliter = 602.214076;
-// Copies that make 1 µM in a volume of `volume_nm3` (N_A V).
-inline double copiesPerMicromolar(double volume_nm3) { return kCopiesPerMicromolarFemtoliter * volume_nm3 * 1e-9; }
-
-struct CompartmentGrid {
-  double size = 500.0;               // nm, cube edge
-  std::array<int, 3> shape{1, 1, 1}; // compartments per axis; the box is shape*size from the origin
-  Index count() const { return shape[0] * shape[1] * shape[2]; }
-  Index index(int i, int j, int k) const { return (k * shape[1] + j) * shape[0] + i; }
-  std::array<int, 3> coords(Index c) const { return {c % shape[0], (c / shape[0]) % shape[1], c / (shape[0] * shape[1])}; }
-  double volume() const { return size * size * size; }  // nm^3
-  Vec3 extent() const { return size * Vec3(shape[0], shape[1], shape[2]); }  // nm, the box's far corner
-  double copiesPerMicromolar() const { return cortex::copiesPerMicromolar(volume()); }  // in one compartment
-  // Face neighbours of c (up to 6; walls are reflective, so missing ones are absent).
-  int neighbours(Index c, std::array<Index, 6>& out) const;
-  Vec3 centre(Index c) const {
-    const auto ijk = coords(c);
-    return Vec3((ijk[0] + 0.5) * size, (ijk[1] + 0.5) * size, (ijk[2] + 0.5) * size);
-  }
-  // Compartment holding point x (nm), clamped to the box.
-  Index locate(const Vec3& x) const;
-};
-
 struct SpeciesDef {
   std::string name;
   double diffusion = 0.0;  // nm^2/s
+  Index surface = -1;      // -1: a 3D species; k: lives on ChemistryModel::surfaces[k]
 };
 
 // The side of a closed membrane a species is confined to (thesis 2.2.4.2); an empty
@@ -53,19 +38,39 @@ struct Stoichiometry {
   int count;
 };
 
-// Mass action: the deterministic rate of the reaction is k * prod [X]^nu (µM/s), with k
-// in µM/s (order 0), 1/s (order 1) or 1/(µM s) (order 2).
+// Mass action. A 3D reaction's deterministic rate is k * prod [X]^nu (µM/s), with k in
+// µM/s (order 0), 1/s (order 1) or 1/(µM s) (order 2). A surface reaction (thesis eq.
+// 3.13) has propensity k A prod [M] prod [C] on a subvolume of area A, [M] in copies/nm^2
+// for its surface species and [C] in copies/nm^3 for 3D species of the compartment that
+// holds it; k in nm^(2 m + 3 c - 2)/s for m surface and c 3D reactant copies.
 struct ReactionDef {
   std::string equation;
   std::vector<Stoichiometry> reactants, products;
   double rate = 0.0;
-  // Carried out by the engine's ReactionHook (filament reactions); such reactions are
-  // built by the program, never parsed from a config.
-  bool hooked = false;
   // Its propensity counts sites (filament ends, site pairs), each reacting at k prod [X]:
   // under confinement it scales by f^-order (ChemistryEngine::setConfinement).
   bool per_site = false;
   int order() const;
+};
+
+// Reactions [begin, end) of a model and the one who owns them: registers their hook and
+// alone sets their rate factors (ChemistryEngine::claimRateFactors).
+struct ReactionRange {
+  std::string owner;
+  Index begin = 0, end = 0;
+  bool contains(Index r) const { return r >= begin && r < end; }
+  Index size() const { return end - begin; }
+};
+
+struct ChemistryModel {
+  SubvolumeGraph volumes = gridGraph(CompartmentGrid{});  // region 0 (default: one 500 nm compartment)
+  std::vector<std::string> surfaces;  // regions 1.., by membrane name
+  std::vector<SpeciesDef> species;
+  std::vector<ReactionDef> reactions;
+  std::vector<ReactionRange> ranges;  // disjoint, in reaction order; every reaction in one
+
+  // Appends reactions owned by `owner`; returns their range.
+  ReactionRange addReactions(const std::string& owner, std::vector<ReactionDef> defs);
 };
 
 // Parses "A + B -> C", "2 A -> B", "-> A", "A ->", "A + A -> B" (= "2 A -> B") against
@@ -73,16 +78,10 @@ struct ReactionDef {
 // adds file and key). Orders above 2 are refused.
 ReactionDef parseReaction(const std::string& equation, double rate, const std::vector<SpeciesDef>& species);
 
-// Propensity of one reaction channel in a compartment of volume V (nm^3) given copy
+// Propensity constant of a 3D reaction of `order` in a subvolume of volume V (nm^3) given copy
 // numbers n: order 0: k·N·V; order 1: k·n; A + B: k/(N·V)·n_A·n_B; 2 A: k/(N·V)·n(n−1)
 // (N = 602.214 copies per µM fL, V in fL), so that the mean event rate per volume is
 // k·prod [X]^nu in the large-copy limit.
-double stochasticRateConstant(const ReactionDef& reaction, double volume_nm3);
-
-struct ChemistryModel {
-  CompartmentGrid grid;
-  std::vector<SpeciesDef> species;
-  std::vector<ReactionDef> reactions;
-};
+double stochasticRateConstant(double rate, int order, double volume_nm3);
 
 }  // namespace cortex

@@ -5,26 +5,35 @@
 namespace cortex {
 
 DirectMethodEngine::DirectMethodEngine(const ChemistryModel& model, const std::vector<int>& copies, std::uint64_t seed)
-    : EngineBase(model, copies, seed),
-      factor_(static_cast<std::size_t>(C_) * R_, 1.0),
-      propensity_(static_cast<std::size_t>(C_) * (R_ + 6 * S_), 0.0) {
-  for (Index c = 0; c < C_; ++c) recompute(c);
+    : EngineBase(model, copies, seed) {
+  relaidOut();
 }
 
-void DirectMethodEngine::recompute(Index c) {
-  const int* n = &copies_[static_cast<std::size_t>(c) * S_];
+void DirectMethodEngine::relaidOut() {
+  edge_source_.assign(edge_target_.size(), 0);
+  for (Index i = 0; i < N_; ++i)
+    for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e) edge_source_[e] = i;
+  propensity_.assign(static_cast<std::size_t>(N_) * R_ + edge_target_.size() * S_, 0.0);
+  for (Index i = 0; i < N_; ++i) recompute(i);
+}
+
+void DirectMethodEngine::recompute(Index i) {
+  const int* n = &copies_[static_cast<std::size_t>(i) * S_];
+  const int* held = &copies_[static_cast<std::size_t>(holder_[i]) * S_];
   for (Index r = 0; r < R_; ++r) {
-    const std::size_t i = static_cast<std::size_t>(c) * R_ + r;
-    propensity_[i] =
-        factor_[i] * net_.kernels[r].constant * confinementScale(c, r) * combinations(net_.kernels[r], n);
+    const std::size_t k = static_cast<std::size_t>(i) * R_ + r;
+    propensity_[k] = factor_[k] * constantAt(i, r) * confinementScale(i, r) * combinations(net_.kernels[r], n, held);
   }
-  const std::uint8_t mask = faces_.mask(c);
-  for (Index s = 0; s < S_; ++s) {
-    const double* confined_rate = confined(s) ? faceRates(c, s) : nullptr;
-    for (int f = 0; f < 6; ++f)
-      propensity_[static_cast<std::size_t>(C_) * R_ + (static_cast<std::size_t>(c) * S_ + s) * 6 + f] =
-          confined_rate ? confined_rate[f] * n[s] : (mask >> f & 1) ? net_.hopRate[s] * n[s] : 0.0;
-  }
+  const std::size_t hops = static_cast<std::size_t>(N_) * R_;
+  for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
+    for (Index s = 0; s < S_; ++s)
+      propensity_[hops + static_cast<std::size_t>(e) * S_ + s] = (weighted(s) ? edgeRate(e, s) : hopRate(s)) * n[s];
+}
+
+void DirectMethodEngine::touch(Index i, Index s) {
+  recompute(i);
+  if (!net_.heldReaders[s].empty())
+    for (Index h : held_[i]) recompute(h);
 }
 
 double DirectMethodEngine::sum() const {
@@ -38,16 +47,16 @@ double DirectMethodEngine::sum() const {
   return (part[0] + part[1]) + (part[2] + part[3]);
 }
 
-void DirectMethodEngine::setCopies(Index compartment, Index species, int n) {
-  checkCopies(compartment, species, n);
-  copies_[slot(compartment, species)] = n;
-  recompute(compartment);
+void DirectMethodEngine::setCopies(Index subvolume, Index species, int n) {
+  checkCopies(subvolume, species, n);
+  copies_[slot(subvolume, species)] = n;
+  touch(subvolume, species);
 }
 
-void DirectMethodEngine::setRateFactor(Index reaction, Index compartment, double factor) {
-  checkRateFactor(reaction, compartment, factor);
-  factor_[static_cast<std::size_t>(compartment) * R_ + reaction] = factor;
-  recompute(compartment);
+void DirectMethodEngine::setRateFactor(Index reaction, Index subvolume, double factor) {
+  checkRateFactor(reaction, subvolume, factor);
+  factor_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor;
+  recompute(subvolume);
 }
 
 void DirectMethodEngine::advance(double t_end) {
@@ -73,26 +82,29 @@ void DirectMethodEngine::advance(double t_end) {
 }
 
 void DirectMethodEngine::fire(std::size_t channel) {
-  const std::size_t reaction_channels = static_cast<std::size_t>(C_) * R_;
+  const std::size_t reaction_channels = static_cast<std::size_t>(N_) * R_;
   if (channel < reaction_channels) {
-    const Index c = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
-    if (!hookAccepts(r, c)) return;  // void event (thinning): nothing changes
+    const Index i = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
+    if (!hookAccepts(r, i)) return;  // void event (thinning): nothing changes
     for (const SpeciesChange& change : net_.changes[r]) {
-      int& n = copies_[static_cast<std::size_t>(c) * S_ + change.species];
-      checkGrowth(n, change.delta, c, change.species);
+      const Index at = change.held ? holder_[i] : i;
+      int& n = copies_[static_cast<std::size_t>(at) * S_ + change.species];
+      checkGrowth(n, change.delta, at, change.species);
       n += change.delta;
+      touch(at, change.species);
     }
     ++reaction_events_[r];
-    recompute(c);
+    recompute(i);
   } else {
     const std::size_t hop = channel - reaction_channels;
-    const Index c = static_cast<Index>(hop / 6 / S_), s = static_cast<Index>(hop / 6 % S_);
-    const Index dest = faces_.across(c, static_cast<int>(hop % 6));
-    --copies_[static_cast<std::size_t>(c) * S_ + s];
-    ++copies_[static_cast<std::size_t>(dest) * S_ + s];
+    const auto e = static_cast<Index>(hop / S_);
+    const auto s = static_cast<Index>(hop % S_);
+    const Index from = edge_source_[e], to = edge_target_[e];
+    --copies_[static_cast<std::size_t>(from) * S_ + s];
+    ++copies_[static_cast<std::size_t>(to) * S_ + s];
     ++diffusion_events_;
-    recompute(c);
-    recompute(dest);
+    touch(from, s);
+    touch(to, s);
   }
   ++events_;
 }

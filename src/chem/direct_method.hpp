@@ -1,8 +1,8 @@
-// Gillespie's direct method over every channel of the grid, kept simple enough to trust:
-// one flat propensity array (reactions of every compartment, then one hop channel per
-// compartment, species and face), the total summed afresh before every event, a linear
-// search to pick the channel, and all channels of the touched compartments recomputed.
-// O(channels) per event: for tests and as a benchmark baseline, not for real runs.
+// Gillespie's direct method over every channel, kept simple enough to trust: one flat
+// propensity array (reactions of every subvolume, then one hop channel per directed edge
+// and species), the total summed afresh before every event, a linear search to pick the
+// channel, and all channels of the touched subvolumes recomputed. O(channels) per
+// event: for tests and as a benchmark baseline, not for real runs.
 #pragma once
 
 #include <vector>
@@ -16,17 +16,20 @@ class DirectMethodEngine final : public EngineBase {
   DirectMethodEngine(const ChemistryModel& model, const std::vector<int>& copies, std::uint64_t seed);
 
   void advance(double t_end) override;
-  void setCopies(Index compartment, Index species, int n) override;
-  void setRateFactor(Index reaction, Index compartment, double factor) override;
+  void setCopies(Index subvolume, Index species, int n) override;
 
  private:
-  void recompute(Index c);
-  void refreshCompartment(Index c) override { recompute(c); }
+  void setRateFactor(Index reaction, Index subvolume, double factor) override;
+  void recompute(Index i);
+  // Recomputes i and, if copies of s changed there, the surface subvolumes reading them.
+  void touch(Index i, Index s);
+  void refreshSubvolume(Index i) override { recompute(i); }
+  void relaidOut() override;
   double sum() const;
   void fire(std::size_t channel);
 
-  std::vector<double> factor_;      // [c * R + r]
-  std::vector<double> propensity_;  // [c * R + r], then hops at C * R + (c * S + s) * 6 + face
+  std::vector<Index> edge_source_;  // per directed edge
+  std::vector<double> propensity_;  // [i * R + r], then hops at N * R + e * S + s
 };
 
 }  // namespace cortex

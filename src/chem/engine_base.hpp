@@ -1,11 +1,11 @@
-// What both engine implementations share: the compiled network, the grid faces, the
-// copies, and the clock, stream and counters that make up a checkpoint.
+// What both engine implementations share: the compiled network, the subvolumes of every
+// region laid out as one graph, the copies, hop rates and confinement, and the clock,
+// stream and counters that make up a checkpoint.
 #pragma once
 
 #include <limits>
 
 #include "chem/chemistry_engine.hpp"
-#include "chem/grid_faces.hpp"
 #include "chem/reaction_network.hpp"
 
 namespace cortex {
@@ -13,82 +13,127 @@ namespace cortex {
 class EngineBase : public ChemistryEngine {
  public:
   double time() const override { return time_; }
-  int copies(Index compartment, Index species) const override { return copies_[slot(compartment, species)]; }
+  Index numSubvolumes() const override { return N_; }
+  Index regionStart(Index region) const override { return region_start_.at(region); }
+  int copies(Index subvolume, Index species) const override { return copies_[slot(subvolume, species)]; }
   std::int64_t events() const override { return events_; }
   const std::vector<std::int64_t>& reactionEvents() const override { return reaction_events_; }
   std::int64_t diffusionEvents() const override { return diffusion_events_; }
   const RandomStream& random() const override { return rng_; }
-  void setReactionHook(ReactionHook* hook) override { hook_ = hook; }
-  void restore(const RandomStream& stream, double time, std::int64_t events,
-               const std::vector<std::int64_t>& reaction_events, std::int64_t diffusion_events) override;
+  RateFactors claimRateFactors(const ReactionRange& range) override;
+  void setReactionHook(const ReactionRange& range, ReactionHook* hook) override;
+  ChemistryState state() const override;
+  void restore(const ChemistryState& state) override;
   // Stores the confinement, relocates stranded copies, then lets the engine recompute
-  // the compartments whose rates changed (refreshCompartment).
-  void setConfinement(Index species, const std::vector<double>& volume,
-                      const std::vector<std::array<double, 6>>& faces) override;
+  // the subvolumes whose rates changed (refreshSubvolume).
+  void setConfinement(Index species, const std::vector<double>& volume, const std::vector<double>& edges) override;
+  void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
+                  const std::vector<int>& copies) override;
 
  protected:
   // Throws InputError for an invalid model or negative copies, std::invalid_argument
-  // when `copies` does not have compartments * species entries.
+  // when `copies` does not have (3D subvolumes) * species entries.
   EngineBase(const ChemistryModel& model, const std::vector<int>& copies, std::uint64_t seed);
 
-  // Index of (compartment, species) in copies_; throws std::out_of_range.
-  std::size_t slot(Index compartment, Index species) const;
+  // Index of (subvolume, species) in copies_; throws std::out_of_range.
+  std::size_t slot(Index subvolume, Index species) const;
   // Checks the arguments of setCopies / setRateFactor; throws std::out_of_range or
   // std::invalid_argument.
-  void checkCopies(Index compartment, Index species, int n) const;
-  void checkRateFactor(Index reaction, Index compartment, double factor) const;
+  void checkCopies(Index subvolume, Index species, int n) const;
+  void checkRateFactor(Index reaction, Index subvolume, double factor) const;
   // Copy numbers are 32-bit: a reaction that would push one past 2^31 - 1 stops the run
   // (RunError) instead of wrapping around.
-  void checkGrowth(int n, int delta, Index compartment, Index species) const {
-    if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(compartment, species);
+  void checkGrowth(int n, int delta, Index subvolume, Index species) const {
+    if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(subvolume, species);
   }
-  [[noreturn]] void growthOverflow(Index compartment, Index species) const;
+  [[noreturn]] void growthOverflow(Index subvolume, Index species) const;
 
-  // Recomputes every propensity of compartment c from copies_ and the rates.
-  virtual void refreshCompartment(Index c) = 0;
+  // Recomputes every propensity of subvolume i from copies_, the factors and the rates.
+  virtual void refreshSubvolume(Index i) = 0;
+  // The subvolumes were laid out anew (setSurface): resize and recompute everything.
+  virtual void relaidOut() = 0;
 
-  // Lets the hook carry out reaction r in c if it is hooked; false: the event is void.
-  bool hookAccepts(Index r, Index c) { return !hook_ || !net_.hooked[r] || hook_->fired(r, c, *this, rng_); }
+  // Lets reaction r's hook carry it out in subvolume i; false: the event is void.
+  bool hookAccepts(Index r, Index i) { return !hooks_[r] || hooks_[r]->fired(r, i, *this, rng_); }
 
-  bool confined(Index species) const { return confined_[species] != 0; }
-  // Per-copy hop rate of a confined species out of c, in total and through face f.
-  double hopOut(Index c, Index s) const { return hop_out_[static_cast<std::size_t>(c) * S_ + s]; }
-  const double* faceRates(Index c, Index s) const { return &face_rate_[(static_cast<std::size_t>(c) * S_ + s) * 6]; }
-  // Factor by which confinement scales reaction r's propensity in compartment c.
-  double confinementScale(Index c, Index r) const {
+  // Propensity constant of reaction r in subvolume i (0 outside r's region), before its
+  // rate factor and confinement scale.
+  double constantAt(Index i, Index r) const {
+    if (net_.region[r] != region_of_[i]) return 0.0;
+    return net_.constant(r, size_[i], size_[holder_[i]]);
+  }
+  // Factor by which confinement scales reaction r's propensity in subvolume i.
+  double confinementScale(Index i, Index r) const {
+    if (region_of_[i] != 0) return heldScale(i, r);
     const Index s = scale_species_[r];
     if (s < 0) return 1.0;
-    const double f = volume_[static_cast<std::size_t>(c) * S_ + s];
+    const double f = volume_[static_cast<std::size_t>(i) * S_ + s];
     if (!(f > 0.0)) return 0.0;
-    const int order = reaction_order_[r];
+    const int order = net_.order[r];
     // A per-site propensity (an end, a pair of sites) is k prod [X], each concentration
     // n / (f V), whatever the order.
     if (net_.perSite[r]) return order == 0 ? 1.0 : order == 1 ? 1.0 / f : 1.0 / (f * f);
     return order == 0 ? f : order == 2 ? 1.0 / f : 1.0;
   }
-  bool active(Index c, Index s) const { return !confined(s) || volume_[static_cast<std::size_t>(c) * S_ + s] > 0.0; }
+  // A 3D copy of `species` may be in subvolume i (not an inactive, confined-out one).
+  bool active(Index i, Index s) const {
+    if (region_of_[i] != net_.speciesRegion[s]) return false;
+    return region_of_[i] != 0 || volume_.empty() || volume_[static_cast<std::size_t>(i) * S_ + s] > 0.0;
+  }
+
+  // Per-copy hop rates. A species is weighted when its rates differ from edge to edge
+  // (confined, or on a graph with unequal hop lengths): then hopOut / edgeRate hold them;
+  // otherwise every edge has hopRate(s).
+  bool weighted(Index s) const { return weighted_[s] != 0; }
+  double hopRate(Index s) const { return hop_rate_[s]; }
+  double hopOut(Index i, Index s) const { return hop_out_[static_cast<std::size_t>(i) * S_ + s]; }
+  double edgeRate(Index e, Index s) const { return edge_rate_[static_cast<std::size_t>(e) * S_ + s]; }
+  // Total per-copy hop rate of species s out of subvolume i.
+  double hopOutOf(Index i, Index s) const { return weighted(s) ? hopOut(i, s) : degree(i) * hop_rate_[s]; }
+  Index degree(Index i) const { return edge_start_[i + 1] - edge_start_[i]; }
 
   ReactionNetwork net_;
-  GridFaces faces_;
-  Index S_, R_, C_;          // species, reactions, compartments
-  std::vector<int> copies_;  // compartment-major: copies_[c * S_ + s]
+  std::vector<SpeciesDef> species_;
+  Index S_, R_, N_ = 0;        // species, reactions, subvolumes (all regions)
+  // The subvolumes of all regions as one graph (edges never cross regions).
+  std::vector<Index> region_start_;  // per region, and one past the end
+  std::vector<Index> region_of_;     // per subvolume
+  std::vector<double> size_;         // per subvolume: nm^3 or nm^2
+  std::vector<Index> holder_;        // per subvolume: the 3D subvolume holding it (itself if 3D)
+  Rows<Index> held_;                 // per 3D subvolume: the surface subvolumes it holds
+  std::vector<Index> edge_start_, edge_target_;
+  std::vector<double> hop_length2_;
+  std::vector<std::vector<Index>> diffusing_;  // per region: its species with D > 0, ascending
+  std::vector<int> copies_;          // subvolume-major: copies_[i * S_ + s]
+  std::vector<double> factor_;       // rate factors, [i * R_ + r]
   RandomStream rng_;
   double time_ = 0.0;
   std::int64_t events_ = 0;
   std::vector<std::int64_t> reaction_events_;
   std::int64_t diffusion_events_ = 0;
-  ReactionHook* hook_ = nullptr;
 
  private:
-  // Moves copies of s out of inactive compartments; returns the compartments touched.
+  double heldScale(Index i, Index r) const;
+  // Lays out the regions' graphs as one; keeps copies and factors of regions other than
+  // `replaced` (whose new copies are `fresh`), and recomputes every hop rate.
+  void layOut(Index replaced, const std::vector<int>& fresh);
+  void computeHopRates();
+  // Moves copies of s out of inactive subvolumes; marks the subvolumes touched.
   void relocate(Index s, std::vector<char>& dirty);
 
-  std::vector<char> confined_;         // per species
-  std::vector<Index> side_species_;    // per reaction: the species whose side it lives on
-  std::vector<int> reaction_order_;    // per reaction
-  std::vector<Index> scale_species_;   // per reaction: side_species_ once confined, else -1
-  // Allocated at the first setConfinement: [c * S + s] and [(c * S + s) * 6 + face].
-  std::vector<double> volume_, hop_out_, face_rate_;
+  std::vector<SubvolumeGraph> graphs_;        // per region
+  std::vector<std::vector<Index>> holders_;   // per surface region
+  std::vector<ReactionHook*> hooks_;          // per reaction
+  std::vector<ReactionRange> ranges_;
+  std::vector<char> claimed_;                 // per range
+  std::vector<char> weighted_;                // per species
+  std::vector<double> hop_rate_;              // per species: D / l^2 when not weighted
+  std::vector<double> hop_out_, edge_rate_;   // [i * S + s], [e * S + s]; weighted species only
+  std::vector<char> confined_;                // per species
+  std::vector<Index> scale_species_;          // per reaction: its side species once confined, else -1
+  // Confinement inputs per species ([i * S + s] over the 3D subvolumes; 1 when unconfined)
+  // and per 3D edge ([e * S + s]), allocated at the first setConfinement.
+  std::vector<double> volume_, edge_fraction_;
 };
 
 }  // namespace cortex

@@ -1,10 +1,10 @@
 // Next-event times of all compartments, earliest first: a two-level queue.
 //
-// Compartments are grouped in blocks of 16 consecutive ids; the times live in one flat
+// Compartments are grouped in blocks of 32 consecutive ids; the times live in one flat
 // array, and an IndexedHeap orders the blocks by their earliest time. A single heap over
 // 10^5 compartments spends its time in chains of dependent cache misses (each level of a
-// sift waits for the previous one); here the block heap is 16 times smaller and stays in
-// cache, and the price is a scan of 16 contiguous times (two cache lines, fetched in
+// sift waits for the previous one); here the block heap is 32 times smaller and stays in
+// cache, and the price is a scan of 32 contiguous times (four cache lines, fetched in
 // parallel) when a block's earliest compartment moves later. Most updates (a hop's
 // destination) touch no heap at all.
 #pragma once

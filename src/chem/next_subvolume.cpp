@@ -11,94 +11,106 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 NextSubvolumeEngine::NextSubvolumeEngine(const ChemistryModel& model, const std::vector<int>& copies,
                                          std::uint64_t seed)
-    : EngineBase(model, copies, seed),
-      blocks_((R_ + kBlock - 1) / kBlock),
-      rate_(static_cast<std::size_t>(C_) * R_),
-      propensity_(rate_.size(), 0.0),
-      block_sum_(static_cast<std::size_t>(C_) * blocks_, 0.0),
-      sub_(C_) {
-  for (Index c = 0; c < C_; ++c) {
-    for (Index r = 0; r < R_; ++r) rate_[static_cast<std::size_t>(c) * R_ + r] = net_.kernels[r].constant;
-    refresh(c);
+    : EngineBase(model, copies, seed), blocks_((R_ + kBlock - 1) / kBlock) {
+  relaidOut();
+}
+
+void NextSubvolumeEngine::relaidOut() {
+  rate_.assign(static_cast<std::size_t>(N_) * R_, 0.0);
+  propensity_.assign(rate_.size(), 0.0);
+  block_sum_.assign(static_cast<std::size_t>(N_) * blocks_, 0.0);
+  sub_.assign(N_, Subvolume{});
+  for (Index i = 0; i < N_; ++i) {
+    sub_[i].first_edge = edge_start_[i];
+    sub_[i].degree = degree(i);
+    const std::size_t base = static_cast<std::size_t>(i) * R_;
+    for (Index r = 0; r < R_; ++r) rate_[base + r] = factor_[base + r] * constantAt(i, r);
+    refresh(i);
   }
 }
 
-// Exact propensities and sums of compartment c from its copies.
-void NextSubvolumeEngine::refresh(Index c) {
-  Subvolume& v = sub_[c];
-  const int* n = &copies_[static_cast<std::size_t>(c) * S_];
-  const std::size_t base = static_cast<std::size_t>(c) * R_;
+// Exact propensities and sums of subvolume i from its copies.
+void NextSubvolumeEngine::refresh(Index i) {
+  Subvolume& v = sub_[i];
+  const int* n = &copies_[static_cast<std::size_t>(i) * S_];
+  const int* held = heldCopies(i);
+  const std::size_t base = static_cast<std::size_t>(i) * R_;
   v.reactions = 0.0;
   for (Index b = 0; b < blocks_; ++b) {
     double sum = 0.0;
     for (Index r = b * kBlock; r < std::min(R_, (b + 1) * kBlock); ++r) {
-      propensity_[base + r] = rate_[base + r] * confinementScale(c, r) * combinations(net_.kernels[r], n);
+      propensity_[base + r] = rate_[base + r] * confinementScale(i, r) * combinations(net_.kernels[r], n, held);
       sum += propensity_[base + r];
     }
-    block_sum_[static_cast<std::size_t>(c) * blocks_ + b] = sum;
+    block_sum_[static_cast<std::size_t>(i) * blocks_ + b] = sum;
     v.reactions += sum;
   }
-  v.faces = GridFaces::count(faces_.mask(c));
   double hops = 0.0;
-  for (Index s : net_.diffusing) hops += hopOutOf(c, s) * n[s];
+  for (Index s : diffusing_[region_of_[i]]) hops += hopOutOf(i, s) * n[s];
   v.diffusion = hops;
 }
 
-void NextSubvolumeEngine::setPropensity(Index c, Index r) {
-  const std::size_t i = static_cast<std::size_t>(c) * R_ + r;
-  const double p =
-      rate_[i] * confinementScale(c, r) * combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(c) * S_]);
-  const double delta = p - propensity_[i];
-  propensity_[i] = p;
-  block_sum_[static_cast<std::size_t>(c) * blocks_ + r / kBlock] += delta;
-  sub_[c].reactions += delta;
+void NextSubvolumeEngine::setPropensity(Index i, Index r) {
+  const std::size_t k = static_cast<std::size_t>(i) * R_ + r;
+  const double p = rate_[k] * confinementScale(i, r) *
+                   combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_], heldCopies(i));
+  const double delta = p - propensity_[k];
+  propensity_[k] = p;
+  block_sum_[static_cast<std::size_t>(i) * blocks_ + r / kBlock] += delta;
+  sub_[i].reactions += delta;
 }
 
-void NextSubvolumeEngine::changeCopies(Index c, Index s, int delta) {
-  copies_[static_cast<std::size_t>(c) * S_ + s] += delta;
-  sub_[c].diffusion += delta * hopOutOf(c, s);
-  for (Index r : net_.dependents[s]) setPropensity(c, r);
+void NextSubvolumeEngine::changeCopies(Index i, Index s, int delta) {
+  copies_[static_cast<std::size_t>(i) * S_ + s] += delta;
+  sub_[i].diffusion += delta * hopOutOf(i, s);
+  for (Index r : net_.dependents[s]) setPropensity(i, r);
+  const auto readers = net_.heldReaders[s];
+  if (readers.empty()) return;
+  for (Index h : held_[i])
+    changeSubvolume(h, [&] {
+      for (Index r : readers) setPropensity(h, r);
+    });
 }
 
 template <class Change>
-void NextSubvolumeEngine::changeSubvolume(Index c, Change&& change) {
-  if (!advancing_ || c == firing_) {
+void NextSubvolumeEngine::changeSubvolume(Index i, Change&& change) {
+  if (!advancing_ || i == firing_) {
     change();
     return;
   }
-  const double a_old = total(sub_[c]);
-  const double t_old = heap_.time(c);
+  const double a_old = total(sub_[i]);
+  const double t_old = heap_.time(i);
   change();
-  const double a_new = total(sub_[c]);
+  const double a_new = total(sub_[i]);
   double t_new = kNever;
   if (a_new > 0.0)
     t_new = a_old > 0.0 && t_old < kNever ? now_ + a_old / a_new * (t_old - now_) : now_ + rng_.exponential(a_new);
-  heap_.update(c, t_new);
+  heap_.update(i, t_new);
 }
 
-void NextSubvolumeEngine::setCopies(Index compartment, Index species, int n) {
-  checkCopies(compartment, species, n);
-  changeSubvolume(compartment,
-                  [&] { changeCopies(compartment, species, n - copies_[slot(compartment, species)]); });
+void NextSubvolumeEngine::setCopies(Index subvolume, Index species, int n) {
+  checkCopies(subvolume, species, n);
+  changeSubvolume(subvolume, [&] { changeCopies(subvolume, species, n - copies_[slot(subvolume, species)]); });
 }
 
-void NextSubvolumeEngine::setRateFactor(Index reaction, Index compartment, double factor) {
-  checkRateFactor(reaction, compartment, factor);
-  changeSubvolume(compartment, [&] {
-    rate_[static_cast<std::size_t>(compartment) * R_ + reaction] = factor * net_.kernels[reaction].constant;
-    setPropensity(compartment, reaction);
+void NextSubvolumeEngine::setRateFactor(Index reaction, Index subvolume, double factor) {
+  checkRateFactor(reaction, subvolume, factor);
+  factor_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor;
+  changeSubvolume(subvolume, [&] {
+    rate_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor * constantAt(subvolume, reaction);
+    setPropensity(subvolume, reaction);
   });
 }
 
 void NextSubvolumeEngine::advance(double t_end) {
   if (t_end < time_) throw std::invalid_argument("chemistry engine: advance to a time before the current one");
   if (t_end == time_) return;
-  // Nothing is pending between advances: every compartment draws a fresh waiting time.
-  first_times_.resize(C_);
-  for (Index c = 0; c < C_; ++c) {
-    refresh(c);
-    const double a = total(sub_[c]);
-    first_times_[c] = a > 0.0 ? time_ + rng_.exponential(a) : kNever;
+  // Nothing is pending between advances: every subvolume draws a fresh waiting time.
+  first_times_.resize(N_);
+  for (Index i = 0; i < N_; ++i) {
+    refresh(i);
+    const double a = total(sub_[i]);
+    first_times_[i] = a > 0.0 ? time_ + rng_.exponential(a) : kNever;
   }
   heap_.assign(first_times_);
   advancing_ = true;
@@ -107,24 +119,24 @@ void NextSubvolumeEngine::advance(double t_end) {
   time_ = t_end;
 }
 
-void NextSubvolumeEngine::fire(Index c, double t) {
-  const Subvolume& v = sub_[c];
+void NextSubvolumeEngine::fire(Index i, double t) {
+  const Subvolume& v = sub_[i];
   const double reactions = std::max(v.reactions, 0.0);
   const double x = rng_.uniform() * (reactions + std::max(v.diffusion, 0.0));
-  firing_ = c;
+  firing_ = i;
   now_ = t;
   Index r = -1;
   bool fired = false;
   if (x < reactions) {
-    r = pickReaction(c, x);
+    r = pickReaction(i, x);
     // A hooked reaction its hook refuses is a void event (thinning): nothing changes.
-    if (r >= 0 && hookAccepts(r, c)) {
-      react(c, r);
+    if (r >= 0 && hookAccepts(r, i)) {
+      react(i, r);
       ++reaction_events_[r];
       fired = true;
     }
   } else {
-    fired = hop(c, x - reactions);
+    fired = hop(i, x - reactions);
     if (fired) ++diffusion_events_;
   }
   firing_ = -1;
@@ -134,13 +146,13 @@ void NextSubvolumeEngine::fire(Index c, double t) {
   if (fired)
     ++events_;
   else if (x >= reactions || r < 0)
-    refresh(c);
-  reschedule(c, t);
+    refresh(i);
+  reschedule(i, t);
 }
 
-Index NextSubvolumeEngine::pickReaction(Index c, double x) const {
-  const double* sums = &block_sum_[static_cast<std::size_t>(c) * blocks_];
-  const double* p = &propensity_[static_cast<std::size_t>(c) * R_];
+Index NextSubvolumeEngine::pickReaction(Index i, double x) const {
+  const double* sums = &block_sum_[static_cast<std::size_t>(i) * blocks_];
+  const double* p = &propensity_[static_cast<std::size_t>(i) * R_];
   for (Index b = 0; b < blocks_; ++b) {
     if (x < sums[b]) {
       const Index begin = b * kBlock, end = std::min(R_, begin + kBlock);
@@ -157,26 +169,45 @@ Index NextSubvolumeEngine::pickReaction(Index c, double x) const {
   return -1;
 }
 
-void NextSubvolumeEngine::react(Index c, Index r) {
-  Subvolume& v = sub_[c];
-  int* n = &copies_[static_cast<std::size_t>(c) * S_];
+void NextSubvolumeEngine::react(Index i, Index r) {
+  Subvolume& v = sub_[i];
+  int* n = &copies_[static_cast<std::size_t>(i) * S_];
+  bool cascades = false;
   for (const SpeciesChange& change : net_.changes[r]) {
-    checkGrowth(n[change.species], change.delta, c, change.species);
+    if (change.held) continue;
+    checkGrowth(n[change.species], change.delta, i, change.species);
     n[change.species] += change.delta;
-    v.diffusion += change.delta * hopOutOf(c, change.species);
+    v.diffusion += change.delta * hopOutOf(i, change.species);
+    cascades = cascades || !net_.heldReaders[change.species].empty();
   }
-  for (Index dependent : net_.affected[r]) setPropensity(c, dependent);
+  for (Index dependent : net_.affected[r]) setPropensity(i, dependent);
+  // What the local changes do to the surface subvolumes i holds, and the held changes of
+  // a surface reaction in i's holder (which in turn reach every subvolume it holds).
+  if (cascades)
+    for (const SpeciesChange& change : net_.changes[r]) {
+      if (change.held || net_.heldReaders[change.species].empty()) continue;
+      for (Index h : held_[i])
+        changeSubvolume(h, [&] {
+          for (Index reader : net_.heldReaders[change.species]) setPropensity(h, reader);
+        });
+    }
+  for (const SpeciesChange& change : net_.changes[r]) {
+    if (!change.held) continue;
+    const Index h = holder_[i];
+    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
+    changeSubvolume(h, [&] { changeCopies(h, change.species, change.delta); });
+  }
 }
 
-// x in [0, diffusion of c) picks the species by its share and, with what is left of it,
-// the face: one uniform number serves both choices.
-bool NextSubvolumeEngine::hop(Index c, double x) {
-  const int faces = sub_[c].faces;
-  const int* n = &copies_[static_cast<std::size_t>(c) * S_];
+// x in [0, diffusion of i) picks the species by its share and, with what is left of it,
+// the edge: one uniform number serves both choices.
+bool NextSubvolumeEngine::hop(Index i, double x) {
+  const Subvolume& v = sub_[i];
+  const int* n = &copies_[static_cast<std::size_t>(i) * S_];
   Index s = -1;
   double w = 0.0;
-  for (Index d : net_.diffusing) {
-    w = hopOutOf(c, d) * n[d];
+  for (Index d : diffusing_[region_of_[i]]) {
+    w = hopOutOf(i, d) * n[d];
     if (x < w) {
       s = d;
       break;
@@ -185,31 +216,31 @@ bool NextSubvolumeEngine::hop(Index c, double x) {
   }
   if (s < 0) return false;
   Index dest;
-  if (!confined(s)) {
-    dest = faces_.neighbour(c, std::min(static_cast<int>(x / w * faces), faces - 1));
+  if (!weighted(s)) {
+    dest = edge_target_[v.first_edge + std::min(static_cast<Index>(x / w * v.degree), v.degree - 1)];
   } else {
-    // Faces weighted by their rates a_face / f; what is left of x picks one.
-    const double* rate = faceRates(c, s);
+    // Edges weighted by their rates; what is left of x picks one.
     double y = x / n[s];
-    int face = -1;
-    for (int f = 0; f < 6; ++f) {
-      if (!(rate[f] > 0.0)) continue;
-      face = f;
-      if (y < rate[f]) break;
-      y -= rate[f];
+    Index edge = -1;
+    for (Index e = v.first_edge; e < v.first_edge + v.degree; ++e) {
+      const double rate = edgeRate(e, s);
+      if (!(rate > 0.0)) continue;
+      edge = e;
+      if (y < rate) break;
+      y -= rate;
     }
-    if (face < 0) return false;
-    dest = faces_.across(c, face);
+    if (edge < 0) return false;
+    dest = edge_target_[edge];
   }
 
-  changeCopies(c, s, -1);
+  changeCopies(i, s, -1);
   changeSubvolume(dest, [&] { changeCopies(dest, s, +1); });
   return true;
 }
 
-// c is the compartment that fired, still at the top of the heap.
-void NextSubvolumeEngine::reschedule(Index c, double t) {
-  const double a = total(sub_[c]);
+// i is the subvolume that fired, still at the top of the heap.
+void NextSubvolumeEngine::reschedule(Index i, double t) {
+  const double a = total(sub_[i]);
   heap_.replaceTop(a > 0.0 ? t + rng_.exponential(a) : kNever);
 }
 

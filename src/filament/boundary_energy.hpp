@@ -21,6 +21,7 @@ class BoundaryRepulsionEnergy final : public FilamentTerm {
   BoundaryRepulsionEnergy(const FilamentLayout& layout, BoundaryConfig boundary)
       : FilamentTerm(layout, "boundary"), boundary_(boundary) {}
   double evaluate(const Evaluation& e) override;
+  bool isContact() const override { return true; }
 
  private:
   BoundaryConfig boundary_;

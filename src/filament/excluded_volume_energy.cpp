@@ -156,6 +156,7 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
   for (Index i = 0; i < n; ++i) cell_items_[cursor_[cell_of_[i]]++] = i;
 
   for (Index i = 0; i < n; ++i) {
+    const std::size_t first_pair = pairs_.size();
     const Cylinder& ci = cyl[i];
     const Vec3 a0 = bead(ci.bead0), a1 = bead(ci.bead1);
     const FilamentType& ti = types_[ci.type];
@@ -181,6 +182,10 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
                 {i, j, 0.5 * (ti.excluded_volume_stiffness + tj.excluded_volume_stiffness), d0, std::sqrt(d2)});
           }
         }
+    // Pairs in (i, j) order whatever the cells were: sums over the list then depend only
+    // on the positions, not on where the list was last built.
+    std::sort(pairs_.begin() + static_cast<std::ptrdiff_t>(first_pair), pairs_.end(),
+              [](const Pair& p, const Pair& q) { return p.b < q.b; });
   }
 }
 

@@ -7,7 +7,9 @@
 // moving every bead by less than skin/2 moves every point of a segment by less than
 // skin/2, such pair distances change by less than skin, so the list stays complete until
 // some bead has moved skin/2. evaluate() rebuilds when that happens or the layout
-// version changed, so the energy is exact at every call.
+// version changed, so the energy is exact at every call. Pairs are kept in (i, j) order,
+// so energies and forces do not depend on where the list was built (a resumed run, or
+// the ratchet's load read after a minimization, sums in the same order).
 #pragma once
 
 #include <cstdint>
@@ -33,6 +35,7 @@ class CylinderExclusionEnergy final : public FilamentTerm {
   CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
                           double skin = 10.0);  // nm
   double evaluate(const Evaluation& e) override;
+  bool isContact() const override { return true; }
 
   // Diagnostics, for tests and benchmarks.
   std::int64_t rebuilds() const { return rebuilds_; }

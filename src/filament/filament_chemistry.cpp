@@ -6,8 +6,6 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include "filament/boundary_energy.hpp"
-#include "filament/spring_energy.hpp"
 
 namespace cortex {
 
@@ -19,13 +17,10 @@ bool isBinding(FilamentReaction k) {
 
 }  // namespace
 
-FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT)
-    : net_(network),
-      exclusion_(network.layout(), network.config().types),
-      grid_(model.grid),
-      walls_(wallsOf(network.config(), Vec3::Zero(), model.grid.extent(), 0.0)),
-      kT_(kT) {
-  const auto species = static_cast<Index>(model.species.size());
+FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const CompartmentGrid& grid,
+                                     const std::vector<SpeciesDef>& species_defs, double kT)
+    : net_(network), grid_(grid), walls_(wallsOf(network.config(), Vec3::Zero(), grid.extent(), 0.0)), kT_(kT) {
+  const auto species = static_cast<Index>(species_defs.size());
   auto check = [&](Index s, const std::string& what) {
     if (s < 0 || s >= species) throw InputError(fmt::format("{}: its species is not a [[species]]", what));
   };
@@ -39,6 +34,8 @@ FilamentChemistry::FilamentChemistry(FilamentNetwork& network, const ChemistryMo
 
 void FilamentChemistry::addReactions(ChemistryModel& model) {
   const double nv = grid_.copiesPerMicromolar();
+  std::vector<ReactionDef> defs;
+  const auto first = static_cast<Index>(model.reactions.size());
   auto add = [&](FilamentReaction kind, Index type, std::string equation, std::vector<Stoichiometry> reactants,
                  std::vector<Stoichiometry> products, double rate) {
     auto& row = lookup_[static_cast<int>(kind)];
@@ -49,11 +46,10 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
     d.reactants = std::move(reactants);
     d.products = std::move(products);
     d.rate = rate;
-    d.hooked = true;
     d.per_site = kind != FilamentReaction::kNucleate;  // nucleation is volumetric mass action
     row[type] = static_cast<Index>(channels_.size());
-    channels_.push_back({kind, type, static_cast<Index>(model.reactions.size())});
-    model.reactions.push_back(std::move(d));
+    channels_.push_back({kind, type, first + static_cast<Index>(defs.size())});
+    defs.push_back(std::move(d));
   };
   using K = FilamentReaction;
   // Per-site rates: order-1 reactions keep their constant as is, order-0 ones are
@@ -87,12 +83,18 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
     add(K::kBranch, i, b.name + " branching", {{b.species_index, 1}, {monomer, 1}}, {}, b.rate / nv);
     add(K::kUnbranch, i, b.name + " unbranching", {}, {{b.species_index, 1}}, b.unbranch_rate / nv);
   }
+  range_ = model.addReactions("filaments", std::move(defs));
   // The engine starts every rate factor at 1.
   factor_.assign(channels_.size() * static_cast<std::size_t>(grid_.count()), 1.0);
   pending_.assign(factor_.size(), 0.0);
   for (auto& side : ends_in_) side.assign(grid_.count(), {});
   is_dirty_.assign(factor_.size(), 0);
   candidates_.assign(channels_.size(), BindingCandidates{std::vector<Index>(grid_.count() + 1, 0), {}});
+}
+
+void FilamentChemistry::attach(ChemistryEngine& engine) {
+  factors_ = engine.claimRateFactors(range_);
+  engine.setReactionHook(range_, this);
 }
 
 Index FilamentChemistry::channelOf(FilamentReaction kind, Index type) const {
@@ -128,61 +130,38 @@ double FilamentChemistry::maxEndLoad() const {
 
 // --- after each minimization --------------------------------------------------------------
 
-void FilamentChemistry::updateMechanochemistry(ChemistryEngine& engine) {
-  // Positions as the last minimization left them, in the layout it used.
-  const FilamentLayout& layout = net_.layout();
-  if (layout.num_beads != net_.numBeads() || layout.linkers.size() != net_.linkers().size() ||
-      layout.motors.size() != net_.motors().size())
-    throw std::logic_error("FilamentChemistry::updateMechanochemistry: the network changed since its layout");
-  x_.assign(3 * static_cast<std::size_t>(layout.bead_offset + layout.num_beads), 0.0);
-  net_.gather(x_.data());
-  computeLoads();
-  computeTensions();
+void FilamentChemistry::update(const std::vector<std::array<Vec3, 2>>& end_forces) {
+  computeLoads(end_forces);
+  locateBound();
   findCandidates();
   rebuildFactors();
-  flush(engine);
+  flush();
 }
 
-void FilamentChemistry::computeLoads() {
+// Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
+// exp(-f delta / kT); a pulling force does not speed it beyond free growth.
+void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces) {
   const auto& fils = net_.filaments();
+  if (end_forces.size() != fils.size())
+    throw std::logic_error("FilamentChemistry::update: one pair of end forces per filament");
   ratchet_.assign(fils.size(), {1.0, 1.0});
   load_.assign(fils.size(), {0.0, 0.0});
-  // Forces on the end beads from the walls and from other filaments' cylinders (excluded
-  // volume).
-  const FilamentLayout& layout = net_.layout();
-  gradient_.assign(x_.size(), 0.0);
-  exclusion_.evaluate({x_.data(), gradient_.data(), 0});
-  const auto& boundary = net_.config().boundary;
   for (std::size_t i = 0; i < fils.size(); ++i) {
     const Filament& f = fils[i];
     const double delta = net_.type(f.type).monomer_size;
     for (int e = 0; e < 2; ++e) {
-      const Vec3& tip = e ? f.beads.back() : f.beads.front();
       const Vec3 u = e ? f.plusDirection() : f.minusDirection();
-      const Index bead = layout.bead_offset + net_.firstBead(static_cast<Index>(i)) +
-                         (e ? static_cast<Index>(f.beads.size()) - 1 : 0);
-      const Vec3 force = (boundary ? boundaryForce(*boundary, tip) : Vec3::Zero()) -
-                         Eigen::Map<const Vec3>(&gradient_[3 * static_cast<std::size_t>(bead)]);
-      // Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
-      // exp(-f delta / kT); a pulling force does not speed it beyond free growth.
-      const double load = std::max(0.0, -force.dot(u));
+      const double load = std::max(0.0, -end_forces[i][e].dot(u));
       load_[i][e] = load;
       ratchet_[i][e] = std::exp(-load * delta / kT_);
     }
   }
 }
 
-// The layout's springs are the bound linkers and motors, in order.
-void FilamentChemistry::computeTensions() {
-  const FilamentLayout& layout = net_.layout();
-  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor}) {
-    std::vector<Binding>& bound = net_.bound(kind);
-    const std::vector<Spring>& springs = kind == BinderKind::kLinker ? layout.linkers : layout.motors;
-    for (std::size_t i = 0; i < bound.size(); ++i) {
-      bound[i].tension = springTension(springs[i], x_.data(), layout.bead_offset);
-      bound[i].compartment = compartmentOf(cylinderPoint(springs[i].a, x_.data(), layout.bead_offset));
-    }
-  }
+// Bound proteins fire in the compartment of their first site.
+void FilamentChemistry::locateBound() {
+  for (BinderKind kind : {BinderKind::kLinker, BinderKind::kMotor})
+    for (Binding& b : net_.bound(kind)) b.compartment = compartmentOf(net_.sitePosition(kind, b.type, b.filament[0], b.site[0]));
   for (Branch& b : net_.branches()) b.compartment = compartmentOf(net_.filaments()[b.daughter].beads.front());
 }
 
@@ -286,7 +265,7 @@ void FilamentChemistry::rebuildFactors() {
   }
 }
 
-void FilamentChemistry::flush(ChemistryEngine& engine) {
+void FilamentChemistry::flush() {
   const Index C = grid_.count();
   for (const std::size_t i : dirty_) {
     is_dirty_[i] = 0;
@@ -295,7 +274,7 @@ void FilamentChemistry::flush(ChemistryEngine& engine) {
     const double f = std::max(0.0, pending_[i]);
     if (f == factor_[i]) continue;
     factor_[i] = f;
-    engine.setRateFactor(channels_[i / C].reaction, static_cast<Index>(i % C), f);
+    factors_.set(channels_[i / C].reaction, static_cast<Index>(i % C), f);
   }
   dirty_.clear();
 }

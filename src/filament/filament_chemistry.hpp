@@ -4,9 +4,11 @@
 // reaction's rate factor in a compartment is the sum over the sites it may act on there
 // (ends, bound proteins, candidate site pairs), each weighted by its force-dependent
 // factor; when it fires, fired() picks one of them with that weight and edits the
-// network. Everything force-dependent is recomputed after each minimization
-// (updateMechanochemistry): loads on ends (Brownian ratchet, thesis eq. 2.14), linker
-// and motor tensions, and the candidate pairs within binding range.
+// network. After each minimization the mechanochemical feedback (sim/) hands it the
+// forces the force field's contact terms put on every end and the tensions of the bound
+// proteins (Binding::tension); update() turns them into rates (Brownian ratchet, thesis
+// eq. 2.14; slip and catch bonds; motor stall) and finds the site pairs within binding
+// range. It computes no force itself.
 #pragma once
 
 #include <array>
@@ -16,7 +18,6 @@
 #include "chem/chemistry_engine.hpp"
 #include "chem/reaction_hook.hpp"
 #include "filament/binding_candidates.hpp"
-#include "filament/excluded_volume_energy.hpp"
 #include "filament/filament_network.hpp"
 #include "filament/walls.hpp"
 
@@ -31,20 +32,26 @@ inline constexpr int kFilamentReactionKinds = 12;
 
 class FilamentChemistry final : public ReactionHook {
  public:
-  // kT in pN·nm. Checks that the species the config parser resolved exist in `model`
+  // `grid`: the compartments (the engine's 3D subvolumes, in the same order); kT in
+  // pN·nm. Checks that the species the config parser resolved exist among `species`
   // (InputError otherwise).
-  FilamentChemistry(FilamentNetwork& network, const ChemistryModel& model, double kT);
+  FilamentChemistry(FilamentNetwork& network, const CompartmentGrid& grid, const std::vector<SpeciesDef>& species,
+                    double kT);
 
-  // Appends one hooked reaction per (kind, type) with a non-zero rate to `model`.
+  // Appends one reaction per (kind, type) with a non-zero rate to `model`, owned by
+  // "filaments".
   void addReactions(ChemistryModel& model);
+  // Takes over the engine's rate factors of those reactions and carries them out.
+  void attach(ChemistryEngine& engine);
 
   bool fired(Index reaction, Index compartment, ChemistryEngine& engine, RandomStream& random) override;
 
-  // After a minimization (or at the start, or after a restore), with the network laid out
-  // as it was minimized (std::logic_error otherwise): recomputes end loads, spring
-  // tensions, candidate binding pairs and branching sites from the positions, then every
-  // rate factor that changed.
-  void updateMechanochemistry(ChemistryEngine& engine);
+  // After a minimization (or at the start, or after a restore): `end_forces[f]` is the
+  // force (pN) the contact terms put on filament f's minus and plus end beads, and the
+  // tensions of the bound linkers and motors are set. Recomputes the ratchet factors,
+  // where each bound protein is, the candidate binding pairs and branching sites, then
+  // every rate factor that changed.
+  void update(const std::vector<std::array<Vec3, 2>>& end_forces);
 
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
   double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
@@ -64,8 +71,8 @@ class FilamentChemistry final : public ReactionHook {
   };
   Index channelOf(FilamentReaction kind, Index type) const;
   Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
-  void computeLoads();
-  void computeTensions();
+  void computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces);
+  void locateBound();
   void findCandidates();
   // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the
   // network changes inside a window; flush() passes the entries that changed to the
@@ -77,7 +84,7 @@ class FilamentChemistry final : public ReactionHook {
   void contributeBinding(BinderKind kind, const Binding& b, double sign);
   void contributeBranch(const Branch& b, double sign);
   void rebuildFactors();
-  void flush(ChemistryEngine& engine);
+  void flush();
   // The event, on the object picked with its weight among those in compartment c.
   bool fireEnd(const Channel& ch, Index c, ChemistryEngine& engine, RandomStream& random);
   bool fireNucleation(const Channel& ch, Index c, RandomStream& random);
@@ -89,12 +96,9 @@ class FilamentChemistry final : public ReactionHook {
   void release(const std::vector<Release>& released, ChemistryEngine& engine);
 
   FilamentNetwork& net_;
-  // Its forces on the ends load the ratchet. Not the force field's term: that one's pair
-  // list (and so its summation order) depends on where the minimization rebuilt it, and a
-  // resumed run must get the same loads from the same positions.
-  CylinderExclusionEnergy exclusion_;
-  std::vector<double> x_, gradient_;   // positions at the last update, and the exclusion gradient
   CompartmentGrid grid_;
+  ReactionRange range_;  // its reactions in the model
+  RateFactors factors_;  // and their rate factors in the engine (once attached)
   Walls walls_;  // where nuclei may form
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none

@@ -9,10 +9,8 @@
 namespace cortex {
 
 bool FilamentChemistry::fired(Index reaction, Index compartment, ChemistryEngine& engine, RandomStream& random) {
-  // Filament reactions are appended contiguously after the config's own.
-  const Index k = channels_.empty() ? -1 : reaction - channels_.front().reaction;
-  if (k < 0 || k >= static_cast<Index>(channels_.size())) return true;  // not ours: plain mass action
-  const auto it = channels_.begin() + k;
+  // The engine calls this hook for its own reactions only, one channel each, in order.
+  const auto it = channels_.begin() + (reaction - range_.begin);
   using K = FilamentReaction;
   bool done = false;
   switch (it->kind) {
@@ -43,7 +41,7 @@ bool FilamentChemistry::fired(Index reaction, Index compartment, ChemistryEngine
       done = fireUnbranch(*it, compartment, random);
       break;
   }
-  flush(engine);
+  flush();
   return done;
 }
 

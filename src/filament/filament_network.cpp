@@ -1,5 +1,6 @@
 #include "filament/filament_network.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -176,9 +177,15 @@ CylinderPoint FilamentNetwork::attachment(BinderKind kind, Index type, Index fil
   return {bead_start_[filament] + c, bead_start_[filament] + c + 1, w};
 }
 
-void FilamentNetwork::layOut(Index bead_offset) {
+const std::string& FilamentNetwork::name() const {
+  static const std::string kName = "filaments";
+  return kName;
+}
+
+void FilamentNetwork::setOffset(Index offset) {
+  Body::setOffset(offset);
   FilamentLayout& l = layout_;
-  l.bead_offset = bead_offset;
+  l.bead_offset = offset;
   l.cylinders.clear();
   l.hinges.clear();
   l.linkers.clear();
@@ -214,8 +221,7 @@ void FilamentNetwork::layOut(Index bead_offset) {
   ++l.version;
 }
 
-void FilamentNetwork::gather(double* x) const {
-  double* out = x + 3 * static_cast<std::size_t>(layout_.bead_offset);
+void FilamentNetwork::gather(double* out) const {
   for (const Filament& f : filaments_)
     for (const Vec3& p : f.beads) {
       out[0] = p.x(), out[1] = p.y(), out[2] = p.z();
@@ -223,8 +229,15 @@ void FilamentNetwork::gather(double* x) const {
     }
 }
 
-void FilamentNetwork::scatter(const double* x) {
-  const double* in = x + 3 * static_cast<std::size_t>(layout_.bead_offset);
+void FilamentNetwork::frozen(char* mask) const {
+  for (const Filament& f : filaments_) {
+    std::fill(mask, mask + f.beads.size(), 0);
+    mask[0] = f.minus_anchored ? 1 : 0;
+    mask += f.beads.size();
+  }
+}
+
+void FilamentNetwork::scatter(const double* in) {
   for (Filament& f : filaments_)
     for (Vec3& p : f.beads) {
       p = Vec3(in[0], in[1], in[2]);

@@ -16,6 +16,7 @@
 #include "filament/filament.hpp"
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
+#include "mech/body.hpp"
 
 namespace cortex {
 
@@ -47,9 +48,20 @@ struct Release {
   Vec3 where;
 };
 
-class FilamentNetwork {
+// The whole cytoskeleton; a Body whose points are all filaments' beads, filament after
+// filament (minus end first).
+class FilamentNetwork final : public Body {
  public:
   explicit FilamentNetwork(FilamentConfig config);
+
+  // Body.
+  const std::string& name() const override;
+  Index numPoints() const override { return numBeads(); }
+  void gather(double* x) const override;
+  void scatter(const double* x) override;
+  void frozen(char* mask) const override;  // anchored minus ends
+  // Rebuilds the layout with the beads starting at `offset`.
+  void setOffset(Index offset) override;
 
   const FilamentConfig& config() const { return config_; }
   const FilamentType& type(Index t) const { return config_.types[t]; }
@@ -104,13 +116,10 @@ class FilamentNetwork {
   // --- mechanics ---------------------------------------------------------------------
   Index numBeads() const;
   double totalLength() const;  // nm, over every filament
-  // Rebuilds the layout after chemistry changed the network; bead b of the layout is
-  // filament f's bead i in filament order.
-  void layOut(Index bead_offset);
+  // The layout, rebuilt by setOffset after chemistry changed the network; bead b of the
+  // layout is filament f's bead i in filament order.
   const FilamentLayout& layout() const { return layout_; }
-  Index firstBead(Index f) const { return bead_start_[f]; }  // valid after layOut
-  void gather(double* x) const;   // beads into x (layout numbering, from bead_offset)
-  void scatter(const double* x);  // and back
+  Index firstBead(Index f) const { return bead_start_[f]; }  // valid after setOffset
 
   // Restoring from a checkpoint.
   void restore(std::vector<Filament> filaments, std::vector<Binding> linkers, std::vector<Binding> motors,

@@ -12,6 +12,13 @@ double springTension(const Spring& s, const double* x, Index bead_offset) {
   return s.stiffness * (length - s.rest_length);
 }
 
+std::vector<double> SpringEnergy::tensions(const double* x) const {
+  std::vector<double> out;
+  out.reserve(springs_.size());
+  for (const Spring& s : springs_) out.push_back(springTension(s, x, layout_.bead_offset));
+  return out;
+}
+
 // dE/dpb = -dE/dpa = k (L - l0) r/L with r = pb - pa, shared between each point's two
 // beads by its weights. A zero-length spring has no direction: no gradient.
 double SpringEnergy::evaluate(const Evaluation& e) {

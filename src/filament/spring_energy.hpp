@@ -24,6 +24,8 @@ class SpringEnergy final : public FilamentTerm {
   SpringEnergy(const FilamentLayout& layout, const std::vector<Spring>& springs, std::string name)
       : FilamentTerm(layout, std::move(name)), springs_(springs) {}
   double evaluate(const Evaluation& e) override;
+  // Each spring's tension springTension at coordinates x (the whole coordinate vector).
+  std::vector<double> tensions(const double* x) const;
 
  private:
   const std::vector<Spring>& springs_;

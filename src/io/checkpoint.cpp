@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <type_traits>
+
 #include "core/error.hpp"
 #include "io/filament_checkpoint.hpp"
 #include "io/hdf5_file.hpp"
@@ -9,7 +11,31 @@
 namespace cortex {
 namespace {
 
-constexpr const char* kFormat = "cortex checkpoint 1";
+constexpr const char* kFormat = "cortex checkpoint 2";
+
+// The state structs list their scalar fields once (fields()); these visitors store them
+// as attributes of one group and read them back, so the two directions cannot drift.
+struct AttributeWriter {
+  h5::File& file;
+  std::string group;
+  void operator()(const char* name, double value) const { file.setAttribute(group, name, value); }
+  template <class T>
+    requires std::is_integral_v<T>
+  void operator()(const char* name, T value) const {
+    file.setAttribute(group, name, static_cast<std::int64_t>(value));
+  }
+};
+
+struct AttributeReader {
+  const h5::File& file;
+  std::string group;
+  void operator()(const char* name, double& value) const { value = file.attributeDouble(group, name); }
+  template <class T>
+    requires std::is_integral_v<T>
+  void operator()(const char* name, T& value) const {
+    value = static_cast<T>(file.attributeInt64(group, name));
+  }
+};
 
 std::vector<double> flatten(const std::vector<Vec3>& p) {
   std::vector<double> x;
@@ -18,37 +44,87 @@ std::vector<double> flatten(const std::vector<Vec3>& p) {
   return x;
 }
 
-void writeChemistry(h5::File& f, const ChemistryEngine& chem, const ChemistryModel& model) {
-  const auto species = static_cast<Index>(model.species.size());
-  std::vector<std::int32_t> copies;
-  copies.reserve(static_cast<std::size_t>(model.grid.count()) * species);
-  for (Index c = 0; c < model.grid.count(); ++c)
-    for (Index s = 0; s < species; ++s) copies.push_back(chem.copies(c, s));
-  f.write("/chemistry/copies", copies, {static_cast<hsize_t>(model.grid.count()), static_cast<hsize_t>(species)});
-  f.write("/chemistry/reaction_events", chem.reactionEvents());
-  f.setAttribute("/chemistry", "random_counter", static_cast<std::int64_t>(chem.random().counter()));
-  f.setAttribute("/chemistry", "random_used", static_cast<std::int64_t>(chem.random().usedInBlock()));
-  f.setAttribute("/chemistry", "time", chem.time());
-  f.setAttribute("/chemistry", "events", chem.events());
-  f.setAttribute("/chemistry", "diffusion_events", chem.diffusionEvents());
+// Body names joined by '/', which no name may contain.
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : "/") + n;
+  return out;
+}
+
+std::vector<std::string> splitNames(const std::string& joined) {
+  std::vector<std::string> out;
+  if (joined.empty()) return out;
+  std::size_t start = 0;
+  for (std::size_t slash; (slash = joined.find('/', start)) != std::string::npos; start = slash + 1)
+    out.push_back(joined.substr(start, slash - start));
+  out.push_back(joined.substr(start));
+  return out;
+}
+
+void writeMembrane(h5::File& f, const std::string& g, const MembraneState& s) {
+  const auto n = static_cast<hsize_t>(s.mesh.positions.size());
+  f.write(g + "/vertices", flatten(s.mesh.positions), {n, 3});
+  std::vector<std::int32_t> tris;
+  for (const Tri& t : s.mesh.triangles) tris.insert(tris.end(), t.begin(), t.end());
+  f.write(g + "/triangles", tris, {tris.size() / 3, 3});
+  f.write(g + "/fixed", std::vector<std::int8_t>(s.fixed.begin(), s.fixed.end()));
+  f.write(g + "/vertex_area0", s.material.vertex_area0);
+  MembraneState::fields(s, AttributeWriter{f, g});
+  if (s.remeshing) {
+    const SizingParameters& z = s.remeshing->sizing;
+    f.write(g + "/remesh_sizing", std::vector<double>{z.flat_size, z.min_size, z.max_size, z.tolerance});
+  }
+  const RemeshStats& r = s.remesh_totals;
+  f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
+}
+
+MembraneState readMembrane(const h5::File& f, const std::string& g, const std::string& file_name) {
+  MembraneState s;
+  const std::vector<double> x = f.readDoubles(g + "/vertices");
+  for (std::size_t i = 0; i + 2 < x.size(); i += 3) s.mesh.positions.emplace_back(x[i], x[i + 1], x[i + 2]);
+  const std::vector<std::int32_t> t = f.readInt32(g + "/triangles");
+  for (std::size_t i = 0; i + 2 < t.size(); i += 3) s.mesh.triangles.push_back({t[i], t[i + 1], t[i + 2]});
+  const std::vector<std::int8_t> fixed = f.readInt8(g + "/fixed");
+  s.fixed.assign(fixed.begin(), fixed.end());
+  s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
+  MembraneState::fields(s, AttributeReader{f, g});
+  if (f.exists(g + "/remesh_sizing")) {
+    const std::vector<double> z = f.readDoubles(g + "/remesh_sizing");
+    if (z.size() != 4) throw InputError(fmt::format("{}: {}/remesh_sizing is malformed", file_name, g));
+    RemeshSettings rs;
+    rs.sizing.flat_size = z[0], rs.sizing.min_size = z[1], rs.sizing.max_size = z[2], rs.sizing.tolerance = z[3];
+    s.remeshing = rs;
+  }
+  if (s.fixed.size() != s.mesh.positions.size() || s.material.vertex_area0.size() != s.mesh.positions.size())
+    throw InputError(fmt::format("{}: {}: per-vertex arrays do not match the vertex count", file_name, g));
+  const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");
+  if (r.size() != 5) throw InputError(fmt::format("{}: {}/remesh_totals is malformed", file_name, g));
+  s.remesh_totals = {r[1], r[2], r[3], r[4], r[0]};
+  return s;
+}
+
+void writeChemistry(h5::File& f, const ChemistryState& s) {
+  const std::vector<std::int32_t> copies(s.copies.begin(), s.copies.end());
+  const auto species = static_cast<hsize_t>(std::max<Index>(s.species, 1));
+  f.write("/chemistry/copies", copies, {copies.size() / species, species});
+  f.write("/chemistry/reaction_events", s.reaction_events);
+  ChemistryState::fields(s, AttributeWriter{f, "/chemistry"});
 }
 
 ChemistryState readChemistry(const h5::File& f) {
   ChemistryState s;
-  const std::vector<std::int32_t> copies = f.readInt32("/chemistry/copies");
+  h5::Shape shape;
+  const std::vector<std::int32_t> copies = f.readInt32("/chemistry/copies", &shape);
   s.copies.assign(copies.begin(), copies.end());
+  s.species = shape.size() == 2 ? static_cast<Index>(shape[1]) : 0;
   s.reaction_events = f.readInt64("/chemistry/reaction_events");
-  s.random_counter = static_cast<std::uint64_t>(f.attributeInt64("/chemistry", "random_counter"));
-  s.random_used = static_cast<int>(f.attributeInt64("/chemistry", "random_used"));
-  s.time = f.attributeDouble("/chemistry", "time");
-  s.events = f.attributeInt64("/chemistry", "events");
-  s.diffusion_events = f.attributeInt64("/chemistry", "diffusion_events");
+  ChemistryState::fields(s, AttributeReader{f, "/chemistry"});
   return s;
 }
 
 }  // namespace
 
-void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const System& system) {
+void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const SystemState& state) {
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     h5::File f = h5::File::create(tmp);
@@ -58,39 +134,12 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
     f.setAttribute("/run", "config_source", header.config_source);
     f.setAttribute("/run", "base_dir", header.base_dir);
     f.setAttribute("/run", "next_snapshot", header.next_snapshot);
-    f.setAttribute("/run", "time", system.time());
-    f.setAttribute("/run", "step", system.step);
-    const RunCounters& c = system.counters;
-    f.setAttribute("/run", "minimizations", c.minimizations);
-    f.setAttribute("/run", "minimizer_iterations", c.minimizer_iterations);
-    f.setAttribute("/run", "unconverged_minimizations", c.unconverged_minimizations);
-    f.setAttribute("/run", "last_max_force", c.last_max_force);
-    f.setAttribute("/run", "mechanics_seconds", c.mechanics_seconds);
-    f.setAttribute("/run", "remesh_seconds", c.remesh_seconds);
-    f.setAttribute("/run", "chemistry_seconds", c.chemistry_seconds);
-    f.setAttribute("/run", "force_evaluations", system.forceField().forceEvaluations());
-    f.setAttribute("/run", "energy_evaluations", system.forceField().energyEvaluations());
-    for (const auto& m : system.membranes()) {
-      const std::string g = "/membranes/" + m->name();
-      const auto n = static_cast<hsize_t>(m->mesh().numVertices());
-      f.write(g + "/vertices", flatten(m->mesh().positions()), {n, 3});
-      std::vector<std::int32_t> tris;
-      for (const Tri& t : m->topology().triangles) tris.insert(tris.end(), t.begin(), t.end());
-      f.write(g + "/triangles", tris, {tris.size() / 3, 3});
-      std::vector<std::int8_t> fixed(m->fixedVertices().begin(), m->fixedVertices().end());
-      f.write(g + "/fixed", fixed);
-      f.write(g + "/vertex_area0", m->material().vertex_area0);
-      f.setAttribute(g, "initial_area", m->material().initial_area);
-      f.setAttribute(g, "initial_volume", m->material().initial_volume);
-      if (const auto& rs = m->remeshing()) {
-        const SizingParameters& z = rs->sizing;
-        f.write(g + "/remesh_sizing", std::vector<double>{z.flat_size, z.min_size, z.max_size, z.tolerance});
-      }
-      const RemeshStats& r = m->remeshTotals();
-      f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
-    }
-    if (const ChemistryEngine* chem = system.chemistry()) writeChemistry(f, *chem, system.chemistryModel());
-    if (const FilamentNetwork* net = system.filaments()) writeFilamentState(f, *net);
+    f.setAttribute("/run", "bodies", joinNames(state.bodies));
+    SystemState::fields(state, AttributeWriter{f, "/run"});
+    RunCounters::fields(state.counters, AttributeWriter{f, "/run"});
+    for (const auto& [name, m] : state.membranes) writeMembrane(f, "/membranes/" + name, m);
+    if (state.chemistry) writeChemistry(f, *state.chemistry);
+    if (state.filaments) writeFilamentState(f, *state.filaments);
     f.flush();
   }
   std::filesystem::rename(tmp, file);
@@ -107,46 +156,14 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
   cp.header.config_source = f.attributeString("/run", "config_source");
   cp.header.base_dir = f.attributeString("/run", "base_dir");
   cp.header.next_snapshot = f.attributeInt64("/run", "next_snapshot");
-  cp.time = f.attributeDouble("/run", "time");
-  cp.step = f.attributeInt64("/run", "step");
-  cp.counters.minimizations = f.attributeInt64("/run", "minimizations");
-  cp.counters.minimizer_iterations = f.attributeInt64("/run", "minimizer_iterations");
-  cp.counters.unconverged_minimizations = f.attributeInt64("/run", "unconverged_minimizations");
-  cp.counters.last_max_force = f.attributeDouble("/run", "last_max_force");
-  cp.counters.mechanics_seconds = f.attributeDouble("/run", "mechanics_seconds");
-  cp.counters.remesh_seconds = f.attributeDouble("/run", "remesh_seconds");
-  cp.counters.chemistry_seconds = f.attributeDouble("/run", "chemistry_seconds");
-  cp.force_evaluations = f.attributeInt64("/run", "force_evaluations");
-  cp.energy_evaluations = f.attributeInt64("/run", "energy_evaluations");
-  for (const std::string& name : f.exists("/membranes") ? f.children("/membranes") : std::vector<std::string>{}) {
-    const std::string g = "/membranes/" + name;
-    MembraneState s;
-    const std::vector<double> x = f.readDoubles(g + "/vertices");
-    for (std::size_t i = 0; i + 2 < x.size(); i += 3) s.mesh.positions.emplace_back(x[i], x[i + 1], x[i + 2]);
-    const std::vector<std::int32_t> t = f.readInt32(g + "/triangles");
-    for (std::size_t i = 0; i + 2 < t.size(); i += 3) s.mesh.triangles.push_back({t[i], t[i + 1], t[i + 2]});
-    const std::vector<std::int8_t> fixed = f.readInt8(g + "/fixed");
-    s.fixed.assign(fixed.begin(), fixed.end());
-    s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
-    s.material.initial_area = f.attributeDouble(g, "initial_area");
-    s.material.initial_volume = f.attributeDouble(g, "initial_volume");
-    if (f.exists(g + "/remesh_sizing")) {
-      const std::vector<double> z = f.readDoubles(g + "/remesh_sizing");
-      if (z.size() != 4) throw InputError(fmt::format("{}: {}/remesh_sizing is malformed", file.string(), g));
-      RemeshSettings rs;
-      rs.sizing.flat_size = z[0], rs.sizing.min_size = z[1], rs.sizing.max_size = z[2], rs.sizing.tolerance = z[3];
-      s.remeshing = rs;
-    }
-    if (s.fixed.size() != s.mesh.positions.size() || s.material.vertex_area0.size() != s.mesh.positions.size())
-      throw InputError(fmt::format("{}: {}: per-vertex arrays do not match the vertex count", file.string(), g));
-    const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");
-    if (r.size() != 5) throw InputError(fmt::format("{}: {}/remesh_totals is malformed", file.string(), g));
-    s.remesh_totals = {r[1], r[2], r[3],
-                       r[4], r[0]};
-    cp.membranes.emplace(name, std::move(s));
-  }
-  if (f.exists("/chemistry")) cp.chemistry = readChemistry(f);
-  if (f.exists("/filaments")) cp.filaments = readFilamentState(f, file.string());
+  SystemState& s = cp.state;
+  s.bodies = splitNames(f.attributeString("/run", "bodies"));
+  SystemState::fields(s, AttributeReader{f, "/run"});
+  RunCounters::fields(s.counters, AttributeReader{f, "/run"});
+  for (const std::string& name : f.exists("/membranes") ? f.children("/membranes") : std::vector<std::string>{})
+    s.membranes.emplace(name, readMembrane(f, "/membranes/" + name, file.string()));
+  if (f.exists("/chemistry")) s.chemistry = readChemistry(f);
+  if (f.exists("/filaments")) s.filaments = readFilamentState(f, file.string());
   return cp;
 }
 

@@ -44,6 +44,14 @@ SpeciesSide readSide(const ConfigReader& r, const std::vector<MembraneConfig>& m
   return side;
 }
 
+// Initial amount of a 3D species: copies in the whole box (or, when confined, in the
+// volume on its side of the membrane), spread uniformly at random in that volume.
+struct SpeciesConfig {
+  SpeciesDef def;
+  std::int64_t copies = 0;
+  SpeciesSide side;
+};
+
 SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const std::vector<MembraneConfig>& membranes) {
   SpeciesConfig s;
   s.def.name = r.string("name", "");
@@ -89,33 +97,33 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
     return std::nullopt;
   }
   ChemistryConfig c;
-  if (auto g = root.table("compartments")) c.model.grid = readGrid(*g);
+  if (auto g = root.table("compartments")) c.grid = readGrid(*g);
   if (auto e = root.table("chemistry")) {
     c.engine = e->choice("engine", "nsm", {"nsm", "direct"}) == "direct" ? EngineKind::kDirect
                                                                          : EngineKind::kNextSubvolume;
     e->finish();
   }
-  const double box = c.model.grid.volume() * c.model.grid.count();
+  const double box = c.grid.volume() * c.grid.count();
   for (std::size_t i = 0; i < species.size(); ++i) {
     SpeciesConfig s = readSpecies(species[i], box, membranes);
-    for (const SpeciesDef& other : c.model.species)
+    for (const SpeciesDef& other : c.species)
       if (other.name == s.def.name) species[i].fail("name", fmt::format("\"{}\" is declared twice", s.def.name));
-    c.model.species.push_back(s.def);
+    c.species.push_back(s.def);
     c.initial_copies.push_back(s.copies);
     c.sides.push_back(s.side);
   }
   for (const ConfigReader& r : root.tableArray("reaction")) {
     const std::string equation = r.string("equation", "");
     const double rate = r.requiredNumber("rate", Range::nonNegative(), "(1/s, 1/(µM s) or µM/s by order)");
-    ReactionRestriction restriction{readRegion(r, c.model.grid), readSide(r, membranes)};
+    ReactionRestriction restriction{readRegion(r, c.grid), readSide(r, membranes)};
     try {
-      c.model.reactions.push_back(parseReaction(equation, rate, c.model.species));
+      c.reactions.push_back(parseReaction(equation, rate, c.species));
     } catch (const InputError& e) {
       r.fail("equation", e.what());
     }
     // Confinement scales a propensity by one volume fraction, so a reaction cannot mix
     // species confined to different sides.
-    const ReactionDef& def = c.model.reactions.back();
+    const ReactionDef& def = c.reactions.back();
     std::vector<Index> involved;
     for (const auto& x : def.reactants) involved.push_back(x.species);
     for (const auto& x : def.products) involved.push_back(x.species);
@@ -123,13 +131,13 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
       if (!(c.sides[sp] == c.sides[involved.front()]))
         r.fail("equation", fmt::format("species \"{}\" and \"{}\" are confined to different sides of membranes; "
                                        "a reaction needs all its species on one side",
-                                       c.model.species[involved.front()].name, c.model.species[sp].name));
+                                       c.species[involved.front()].name, c.species[sp].name));
     if (!restriction.side.membrane.empty())
       for (Index sp : involved)
         if (!c.sides[sp].membrane.empty())
           r.fail(restriction.side.outside ? "outside" : "inside",
                  fmt::format("species \"{}\" is confined already and the reaction follows it; restrict "
-                             "reactions of unconfined species only", c.model.species[sp].name));
+                             "reactions of unconfined species only", c.species[sp].name));
     c.reaction_restrictions.push_back(std::move(restriction));
     r.finish();
   }

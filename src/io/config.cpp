@@ -74,28 +74,28 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
   }
 }
 
+// Each term's parameters into its own struct (membrane.hpp).
 MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
   MembraneMechanics m;
   const Range any{};
-  m.bending_modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
-  m.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
+  BendingParameters& bending = m.bending;
+  bending.modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
+  bending.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
   // Default as the thesis advises (sec. 2.2.2): the signed estimator where the sign
   // matters (H0 != 0), the unsigned one otherwise, which resists folded vertices.
-  const char* default_estimator = m.spontaneous_curvature.isZero() ? "unsigned" : "signed";
-  m.curvature = r.choice("curvature", default_estimator, {"signed", "unsigned"}) == "signed"
-                    ? CurvatureEstimator::kSigned
-                    : CurvatureEstimator::kUnsigned;
-  const std::string model = r.choice("area_model", "global", {"global", "per_vertex", "none"});
-  m.area_model = model == "global" ? AreaModel::kGlobal
-                 : model == "per_vertex" ? AreaModel::kPerVertex : AreaModel::kNone;
-  m.area_modulus = r.schedule("area_modulus", model == "none" ? 0.0 : 400.0, Range::nonNegative(), "pN/nm");
-  if (model == "none" && !m.area_modulus.isZero())
-    r.fail("area_modulus", "is set but area_model = \"none\"");
-  m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
-  m.tension = r.schedule("tension", 0.0, any, "pN/nm");
-  m.regularization = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
-  if (!m.spontaneous_curvature.isZero() && m.curvature == CurvatureEstimator::kUnsigned)
+  const char* default_estimator = bending.spontaneous_curvature.isZero() ? "unsigned" : "signed";
+  bending.estimator = r.choice("curvature", default_estimator, {"signed", "unsigned"}) == "signed"
+                          ? CurvatureEstimator::kSigned
+                          : CurvatureEstimator::kUnsigned;
+  if (!bending.spontaneous_curvature.isZero() && bending.estimator == CurvatureEstimator::kUnsigned)
     r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
+  const std::string model = r.choice("area_model", "global", {"global", "per_vertex", "none"});
+  m.area.model = model == "global" ? AreaModel::kGlobal : model == "per_vertex" ? AreaModel::kPerVertex : AreaModel::kNone;
+  m.area.modulus = r.schedule("area_modulus", model == "none" ? 0.0 : 400.0, Range::nonNegative(), "pN/nm");
+  if (model == "none" && !m.area.modulus.isZero()) r.fail("area_modulus", "is set but area_model = \"none\"");
+  m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
+  m.tension.tension = r.schedule("tension", 0.0, any, "pN/nm");
+  m.regularization.strength = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
 
   const char* volume_keys[] = {"volume_modulus", "reduced_volume", "target_volume"};
   if (!closed) {
@@ -103,10 +103,11 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
       if (r.has(k)) r.fail(k, "an open membrane encloses no volume");
     return m;
   }
-  m.volume_modulus = r.schedule("volume_modulus", 0.0, Range::nonNegative(), "pN/nm^2");
-  m.reduced_volume = r.schedule("reduced_volume", std::nullopt, Range{0.0, 1.0, true, false}, "");
-  m.target_volume = r.schedule("target_volume", std::nullopt, Range::positive(), "nm^3");
-  if (m.reduced_volume.isSet() && m.target_volume.isSet())
+  VolumeParameters& volume = m.volume;
+  volume.modulus = r.schedule("volume_modulus", 0.0, Range::nonNegative(), "pN/nm^2");
+  volume.reduced_volume = r.schedule("reduced_volume", std::nullopt, Range{0.0, 1.0, true, false}, "");
+  volume.target_volume = r.schedule("target_volume", std::nullopt, Range::positive(), "nm^3");
+  if (volume.reduced_volume.isSet() && volume.target_volume.isSet())
     r.fail("target_volume", "give either reduced_volume or target_volume, not both");
   return m;
 }

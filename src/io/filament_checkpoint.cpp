@@ -41,12 +41,12 @@ std::vector<Binding> readBindings(const h5::File& f, const std::string& path, st
 
 }  // namespace
 
-void writeFilamentState(h5::File& f, const FilamentNetwork& network) {
+void writeFilamentState(h5::File& f, const FilamentState& network) {
   std::vector<double> beads;
   std::vector<std::int64_t> lattice, offsets{0};
   std::vector<std::int32_t> types;
   std::vector<std::int8_t> flags;
-  for (const Filament& fil : network.filaments()) {
+  for (const Filament& fil : network.filaments) {
     for (const Vec3& p : fil.beads) beads.insert(beads.end(), {p.x(), p.y(), p.z()});
     lattice.insert(lattice.end(), fil.lattice.begin(), fil.lattice.end());
     offsets.push_back(static_cast<std::int64_t>(lattice.size()));
@@ -59,11 +59,11 @@ void writeFilamentState(h5::File& f, const FilamentNetwork& network) {
   f.write("/filaments/offsets", offsets);
   f.write("/filaments/types", types);
   f.write("/filaments/flags", flags);
-  writeBindings(f, "/filaments/linkers", network.linkers());
-  writeBindings(f, "/filaments/motors", network.motors());
+  writeBindings(f, "/filaments/linkers", network.linkers);
+  writeBindings(f, "/filaments/motors", network.motors);
   std::vector<std::int64_t> branches;
-  for (const Branch& b : network.branches()) branches.insert(branches.end(), {b.type, b.mother, b.daughter, b.site});
-  f.write("/filaments/branches", branches, {network.branches().size(), 4});
+  for (const Branch& b : network.branches) branches.insert(branches.end(), {b.type, b.mother, b.daughter, b.site});
+  f.write("/filaments/branches", branches, {network.branches.size(), 4});
 }
 
 FilamentState readFilamentState(const h5::File& f, const std::string& file_name) {

@@ -3,13 +3,12 @@
 // candidate binding pairs are not stored: they follow from the positions.
 #pragma once
 
-#include "filament/filament_network.hpp"
 #include "io/hdf5_file.hpp"
-#include "sim/filament_builder.hpp"
+#include "sim/system_state.hpp"
 
 namespace cortex {
 
-void writeFilamentState(h5::File& file, const FilamentNetwork& network);
+void writeFilamentState(h5::File& file, const FilamentState& state);
 // Throws InputError naming the file for malformed data.
 FilamentState readFilamentState(const h5::File& file, const std::string& file_name);
 

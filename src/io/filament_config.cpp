@@ -249,8 +249,8 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
     return std::nullopt;
   }
   const std::vector<SpeciesDef> no_species;
-  const std::vector<SpeciesDef>& species = chemistry ? chemistry->model.species : no_species;
-  const CompartmentGrid grid = chemistry ? chemistry->model.grid : CompartmentGrid{};
+  const std::vector<SpeciesDef>& species = chemistry ? chemistry->species : no_species;
+  const CompartmentGrid grid = chemistry ? chemistry->grid : CompartmentGrid{};
   const Vec3 grid_max = grid.extent();
 
   FilamentConfig f;

@@ -13,10 +13,8 @@
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
 #include "io/run_observer.hpp"
-#include "io/system_builder.hpp"
 #include "io/summary.hpp"
 #include "io/trajectory_writer.hpp"
-#include "sim/confinement.hpp"
 #include "sim/simulation.hpp"
 
 namespace cortex {
@@ -47,7 +45,7 @@ void checkResumable(const Config& stored, const Config& now, double checkpoint_t
     refuse("simulation.end_time", fmt::format("the checkpoint is at t = {:g} s already", checkpoint_time));
   if (now.chemistry.has_value() != stored.chemistry.has_value()) refuse("[[species]]", "the chemistry state is stored");
   if (now.chemistry) {
-    const CompartmentGrid &a = now.chemistry->model.grid, &b = stored.chemistry->model.grid;
+    const CompartmentGrid &a = now.chemistry->grid, &b = stored.chemistry->grid;
     if (a.size != b.size || a.shape != b.shape) refuse("[compartments]", "copies are stored per compartment");
     if (now.chemistry->engine != stored.chemistry->engine) refuse("chemistry.engine", "engines keep different state");
   }
@@ -95,7 +93,7 @@ void runSimulation(const RunRequest& request) {
     header = checkpoint->header;
     config = parseConfig(header.config_toml, header.config_source, header.base_dir, overrides);
     checkResumable(parseConfig(header.config_toml, header.config_source, header.base_dir, {}), config,
-                   checkpoint->time);
+                   checkpoint->state.time);
   } else {
     config = loadConfig(request.config, overrides);
     outdir = request.output_dir.empty() ? std::filesystem::path(request.config.stem().string() + "_out")
@@ -113,13 +111,7 @@ void runSimulation(const RunRequest& request) {
                resume ? outdir.string() : request.config.string(), config.simulation.seed, request.threads,
                request.threads == 1 ? "" : "s");
 
-  std::unique_ptr<System> system = buildSystem(config, checkpoint ? &*checkpoint : nullptr);
-  if (checkpoint) {
-    system->setTime(checkpoint->time);
-    system->step = checkpoint->step;
-    system->counters = checkpoint->counters;
-    system->forceField().restoreCounters(checkpoint->force_evaluations, checkpoint->energy_evaluations);
-  }
+  auto system = std::make_unique<System>(config, checkpoint ? &checkpoint->state : nullptr);
   for (const auto& m : system->membranes())
     spdlog::info("membrane \"{}\": {} vertices, {} triangles, {}", m->name(), m->mesh().numVertices(),
                  m->mesh().numFaces(), m->isClosed() ? "closed" : "open (boundary fixed)");
@@ -149,11 +141,11 @@ std::string checkConfig(const std::filesystem::path& file, const std::vector<std
   const Config config = loadConfig(file, overrides);
   // Everything a run builds before its first step (meshes, filament placement, engines)
   // is built here too, so that check and run refuse the same inputs.
-  const auto system = buildSystem(config, nullptr);
+  const auto system = std::make_unique<System>(config);
   const std::string chemistry =
       system->chemistry() ? fmt::format(", {} species, {} reactions in {} compartments",
                                         system->chemistryModel().species.size(),
-                                        system->chemistryModel().reactions.size(), system->chemistryModel().grid.count())
+                                        system->chemistryModel().reactions.size(), system->grid().count())
                           : "";
   const std::string filaments =
       system->filaments() ? fmt::format(", {} filaments", system->filaments()->filaments().size()) : "";

@@ -49,7 +49,7 @@ void OutputObserver::onSnapshot(const System& system) {
 
 void OutputObserver::onCheckpoint(const System& system) {
   header_.next_snapshot = writer_.nextIndex();
-  writeCheckpoint(outdir_ / "checkpoint.h5", header_, system);
+  writeCheckpoint(outdir_ / "checkpoint.h5", header_, system.state());
 }
 
 void OutputObserver::onWindow(const System& system, const MinimizationResult& result) {

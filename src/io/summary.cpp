@@ -17,7 +17,7 @@ nlohmann::json chemistrySummary(const System& system) {
   json species = json::object();
   for (Index s = 0; s < static_cast<Index>(model.species.size()); ++s) {
     std::int64_t total = 0;
-    for (Index c = 0; c < model.grid.count(); ++c) total += chem->copies(c, s);
+    for (Index c = 0; c < system.grid().count(); ++c) total += chem->copies(c, s);
     species[model.species[s].name] = total;
   }
   json reactions = json::array();
@@ -26,7 +26,7 @@ nlohmann::json chemistrySummary(const System& system) {
   return {{"events", chem->events()},
           {"diffusion_events", chem->diffusionEvents()},
           {"reactions", reactions},
-          {"compartments", model.grid.count()},
+          {"compartments", system.grid().count()},
           {"species", species}};
 }
 

@@ -24,6 +24,12 @@ class EnergyTerm {
   virtual const std::string& owner() const = 0;
   // Returns the energy (pN·nm) and, if e.gradient is set, adds dE/dx (pN) to it.
   virtual double evaluate(const Evaluation& e) = 0;
+  // Evaluates the term's scheduled parameters at time t (s).
+  virtual void setTime(double /*t*/) {}
+  // A contact term (walls, excluded volume between bodies): its forces on a filament's
+  // end are the load of the Brownian ratchet (thesis eq. 2.14), which the mechanochemical
+  // feedback reads from exactly these terms.
+  virtual bool isContact() const { return false; }
 };
 
 }  // namespace cortex

@@ -28,4 +28,12 @@ std::vector<TermEnergy> ForceField::breakdown(const Eigen::VectorXd& x) {
   return out;
 }
 
+Eigen::VectorXd ForceField::contactForces(const Eigen::VectorXd& x) {
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+  const Evaluation e{x.data(), gradient.data(), ++version_};
+  for (auto& term : terms_)
+    if (term->isContact()) term->evaluate(e);
+  return -gradient;
+}
+
 }  // namespace cortex

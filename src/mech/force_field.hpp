@@ -17,13 +17,26 @@ struct TermEnergy {
 
 class ForceField final : public Objective {
  public:
-  void add(std::unique_ptr<EnergyTerm> term) { terms_.push_back(std::move(term)); }
+  // Returns the term, which stays owned by the force field.
+  template <class Term>
+  Term& add(std::unique_ptr<Term> term) {
+    Term& t = *term;
+    terms_.push_back(std::move(term));
+    return t;
+  }
   // Coordinates whose mask entry is non-zero never move (their gradient reads zero).
   void setFrozen(std::vector<char> frozen) { frozen_ = std::move(frozen); }
+  void setTime(double t) {
+    for (auto& term : terms_) term->setTime(t);
+  }
 
   double value(const Eigen::VectorXd& x) override;
   double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) override;
   std::vector<TermEnergy> breakdown(const Eigen::VectorXd& x);
+  // -dE/dx of the contact terms alone (EnergyTerm::isContact), frozen coordinates
+  // included: the forces walls and other bodies put on each point. Not counted as a
+  // force evaluation (it is feedback, not minimization).
+  Eigen::VectorXd contactForces(const Eigen::VectorXd& x);
 
   std::int64_t forceEvaluations() const { return force_evaluations_; }
   std::int64_t energyEvaluations() const { return energy_evaluations_; }

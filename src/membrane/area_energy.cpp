@@ -7,7 +7,7 @@ namespace cortex {
 
 double GlobalAreaEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
-  const double k = membrane_.now().k_area, a0 = membrane_.now().area0;
+  const double k = k_, a0 = a0_;
   const double da = g.area - a0;
   if (double* grad = gradientOf(e)) addScaledVertexField(grad, g.area_gradient, k * da / a0);
   return 0.5 * k * da * da / a0;
@@ -16,11 +16,11 @@ double GlobalAreaEnergy::evaluate(const Evaluation& e) {
 double PerVertexAreaEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
   const MeshTopology& topo = membrane_.topology();
-  const double k = membrane_.now().k_area;
+  const double k = k_;
   const Index nv = topo.numVertices();
   coefficient_.resize(nv);
   const double energy = deterministicSum(nv, [&](Index v) {
-    const double a0 = membrane_.vertexArea0(v);
+    const double a0 = membrane_.material().vertex_area0[v] * scale_;
     const double da = g.vertex_area[v] - a0;
     coefficient_[v] = k * da / a0;
     return 0.5 * k * da * da / a0;
@@ -33,9 +33,9 @@ double PerVertexAreaEnergy::evaluate(const Evaluation& e) {
   parallelFor(nf, [&](Index f) {
     const Tri& t = topo.triangles[f];
     const double c = (coefficient_[t[0]] + coefficient_[t[1]] + coefficient_[t[2]]) / 3.0;
-    const Vec3 a = vertexAt(e.x + 3 * membrane_.dofOffset(), t[0]);
-    const Vec3 b = vertexAt(e.x + 3 * membrane_.dofOffset(), t[1]);
-    const Vec3 cc = vertexAt(e.x + 3 * membrane_.dofOffset(), t[2]);
+    const Vec3 a = vertexAt(e.x + 3 * membrane_.offset(), t[0]);
+    const Vec3 b = vertexAt(e.x + 3 * membrane_.offset(), t[1]);
+    const Vec3 cc = vertexAt(e.x + 3 * membrane_.offset(), t[2]);
     const TriangleEdges edges(a, b, cc);
     const Vec3 half_normal = 0.5 * c * g.face_unit_normal[f];
     for (int k3 = 0; k3 < 3; ++k3) corner_gradient_[3 * f + k3] = half_normal.cross(edges.e[k3]);
@@ -46,7 +46,7 @@ double PerVertexAreaEnergy::evaluate(const Evaluation& e) {
 
 double TensionEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
-  const double gamma = membrane_.now().gamma;
+  const double gamma = gamma_;
   if (double* grad = gradientOf(e)) addScaledVertexField(grad, g.area_gradient, gamma);
   return gamma * g.area;
 }

@@ -17,8 +17,7 @@ namespace cortex {
 double BendingEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
   const MeshTopology& topo = membrane_.topology();
-  const MembraneCoefficients& now = membrane_.now();
-  const CurvatureEstimator estimator = membrane_.mechanics().curvature;
+  const CurvatureEstimator estimator = p_.estimator;
   const Index nv = topo.numVertices();
   const bool want_gradient = e.gradient != nullptr;
   if (want_gradient) {
@@ -38,18 +37,18 @@ double BendingEnergy::evaluate(const Evaluation& e) {
     }
     const CurvatureAndDerivative c =
         meanCurvature(g.area_gradient[v], g.volume_gradient[v], estimator);
-    const double dh = c.H - now.h0;
+    const double dh = c.H - h0_;
     if (want_gradient) {
-      const double s = 4.0 * now.kappa * dh * g.vertex_area[v];
-      area_coefficient_[v] = 2.0 * now.kappa * dh * dh;
+      const double s = 4.0 * kappa_ * dh * g.vertex_area[v];
+      area_coefficient_[v] = 2.0 * kappa_ * dh * dh;
       alpha_[v] = s * c.alpha;
       beta_[v] = s * c.beta;
     }
-    return 2.0 * now.kappa * dh * dh * g.vertex_area[v];
+    return 2.0 * kappa_ * dh * dh * g.vertex_area[v];
   });
   if (!want_gradient) return energy;
 
-  const double* x = e.x + 3 * membrane_.dofOffset();
+  const double* x = e.x + 3 * membrane_.offset();
   const Index nf = topo.numFaces();
   corner_gradient_.resize(3 * static_cast<std::size_t>(nf));
   parallelFor(nf, [&](Index f) {

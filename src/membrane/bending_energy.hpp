@@ -8,10 +8,16 @@ namespace cortex {
 
 class BendingEnergy final : public MembraneTerm {
  public:
-  explicit BendingEnergy(Membrane& m) : MembraneTerm(m, "bending") {}
+  BendingEnergy(Membrane& m, BendingParameters p) : MembraneTerm(m, "bending"), p_(std::move(p)) { setTime(0.0); }
   double evaluate(const Evaluation& e) override;
+  void setTime(double t) override {
+    kappa_ = p_.modulus.at(t);
+    h0_ = p_.spontaneous_curvature.at(t);
+  }
 
  private:
+  BendingParameters p_;
+  double kappa_ = 0.0, h0_ = 0.0;
   // Per vertex: dE/dA_v, and alpha, beta of dH_v/dx scaled by dE/dH_v.
   std::vector<double> area_coefficient_;
   std::vector<Vec3> alpha_, beta_;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace cortex {
 
@@ -20,42 +21,43 @@ std::vector<double> flatten(const std::vector<Vec3>& p) {
 }  // namespace
 
 Membrane::Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechanics,
-                   std::vector<char> fixed_vertices)
+                   std::vector<char> fixed_vertices, const std::string& where)
     : name_(std::move(name)),
       mesh_(std::move(mesh)),
       topology_(MeshTopology::of(mesh_)),
       mechanics_(std::move(mechanics)),
       fixed_(std::move(fixed_vertices)) {
+  if (!isClosed() && mechanics_.volume.isSet())
+    throw InputError((where.empty() ? "membrane \"" + name_ + "\"" : where) +
+                     ": the mesh is open (has a boundary), so volume_modulus, reduced_volume and "
+                     "target_volume cannot apply");
   fixed_.resize(mesh_.numVertices(), 0);
   const MeshGeometry g = currentGeometry();
   material_.initial_area = g.area;
   material_.initial_volume = g.volume;
   material_.vertex_area0 = g.vertex_area;
-  setTime(0.0);
 }
+
+void Membrane::gather(double* x) const {
+  for (const Vec3& p : mesh_.positions()) {
+    x[0] = p.x(), x[1] = p.y(), x[2] = p.z();
+    x += 3;
+  }
+}
+
+void Membrane::scatter(const double* x) {
+  for (Vec3& p : mesh_.positions()) {
+    p = Vec3(x[0], x[1], x[2]);
+    x += 3;
+  }
+}
+
+void Membrane::frozen(char* mask) const { std::copy(fixed_.begin(), fixed_.end(), mask); }
 
 MeshGeometry Membrane::currentGeometry() const {
   MeshGeometry g;
   g.compute(topology_, flatten(mesh_.positions()).data());
   return g;
-}
-
-void Membrane::setTime(double t) {
-  const MembraneMechanics& m = mechanics_;
-  now_.kappa = m.bending_modulus.at(t);
-  now_.h0 = m.spontaneous_curvature.at(t);
-  now_.k_area = m.area_modulus.at(t);
-  now_.gamma = m.tension.at(t);
-  now_.k_volume = m.volume_modulus.at(t);
-  now_.k_regularization = m.regularization.at(t);
-  now_.area0 = m.target_area.isSet() ? m.target_area.at(t) : material_.initial_area;
-  vertex_area0_scale_ = now_.area0 / material_.initial_area;
-  if (m.target_volume.isSet())
-    now_.volume0 = m.target_volume.at(t);
-  else if (m.reduced_volume.isSet())
-    now_.volume0 = m.reduced_volume.at(t) * sphereVolumeOfArea(now_.area0);
-  else
-    now_.volume0 = material_.initial_volume;
 }
 
 RemeshStats Membrane::remesh(const RemeshSettings& settings) {
@@ -76,7 +78,7 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
 
 const MeshGeometry& Membrane::geometry(const Evaluation& e) {
   if (!cache_valid_ || cache_version_ != e.version) {
-    cache_.compute(topology_, e.x + 3 * dof_offset_);
+    cache_.compute(topology_, e.x + 3 * offset());
     cache_version_ = e.version;
     cache_valid_ = true;
   }

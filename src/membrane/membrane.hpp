@@ -1,5 +1,6 @@
-// One membrane: its mesh, its mechanical parameters (possibly scheduled in time), the
-// material reference state, and the geometry cache its energy terms share.
+// One membrane: its mesh (a Body: its vertices are coordinates of the minimizer), the
+// parameters of its energy terms (possibly scheduled in time), the material reference
+// state, and the geometry cache its energy terms share.
 #pragma once
 
 #include <optional>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "core/schedule.hpp"
+#include "mech/body.hpp"
 #include "mech/energy_term.hpp"
 #include "membrane/curvature.hpp"
 #include "mesh/geometry.hpp"
@@ -16,21 +18,49 @@
 
 namespace cortex {
 
+// Helfrich bending (bending_energy.hpp).
+struct BendingParameters {
+  Schedule modulus{0.0};                // κ, pN·nm
+  Schedule spontaneous_curvature{0.0};  // H0, 1/nm
+  CurvatureEstimator estimator = CurvatureEstimator::kSigned;
+};
+
 enum class AreaModel { kGlobal, kPerVertex, kNone };
 
-// Mechanical parameters as the user gave them; unset schedules take the defaults below.
+// Area elasticity (area_energy.hpp); its reference area is the membrane's target area.
+struct AreaParameters {
+  AreaModel model = AreaModel::kGlobal;
+  Schedule modulus{0.0};  // pN/nm
+};
+
+// Surface tension (area_energy.hpp).
+struct TensionParameters {
+  Schedule tension{0.0};  // pN/nm
+};
+
+// Osmotic volume term (volume_energy.hpp); closed membranes only.
+struct VolumeParameters {
+  Schedule modulus{0.0};  // pN/nm^2
+  Schedule target_volume; // nm^3; default: reduced_volume, else the initial volume
+  Schedule reduced_volume;
+  bool isSet() const { return !modulus.isZero() || target_volume.isSet() || reduced_volume.isSet(); }
+};
+
+// Mesh regularization (regularization_energy.hpp), a numerical term.
+struct RegularizationParameters {
+  Schedule strength{0.0};  // pN·nm per triangle
+};
+
+// The parameters of every term a membrane can have (membrane_terms.cpp lists the terms).
 struct MembraneMechanics {
-  Schedule bending_modulus{0.0};        // pN·nm
-  Schedule spontaneous_curvature{0.0};  // 1/nm
-  Schedule area_modulus{0.0};           // pN/nm
-  Schedule tension{0.0};                // pN/nm
-  Schedule volume_modulus{0.0};         // pN/nm^2
-  Schedule regularization{0.0};         // pN·nm per triangle, mesh regularization (regularization_energy.hpp)
-  Schedule target_area;                 // nm^2; default: the initial area
-  Schedule target_volume;               // nm^3; default: reduced_volume, else the initial volume
-  Schedule reduced_volume;              // dimensionless
-  CurvatureEstimator curvature = CurvatureEstimator::kSigned;
-  AreaModel area_model = AreaModel::kGlobal;
+  BendingParameters bending;
+  AreaParameters area;
+  TensionParameters tension;
+  VolumeParameters volume;
+  RegularizationParameters regularization;
+  // The membrane's amount of lipid, nm^2 (default: its initial area): the area terms'
+  // reference and the area whose sphere the reduced volume refers to.
+  Schedule target_area;
 };
 
 // Reference state fixed when the membrane is created (and restored from checkpoints).
@@ -40,20 +70,21 @@ struct MembraneMaterial {
   std::vector<double> vertex_area0;  // per-vertex material areas (per_vertex area model)
 };
 
-// The scheduled parameters evaluated at the current time.
-struct MembraneCoefficients {
-  double kappa = 0, h0 = 0, k_area = 0, area0 = 0, gamma = 0, k_volume = 0, volume0 = 0;
-  double k_regularization = 0;
-};
-
-class Membrane {
+class Membrane final : public Body {
  public:
-  Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechanics,
-           std::vector<char> fixed_vertices);
+  // Throws InputError (naming `where`) when volume parameters are given for an open mesh.
+  Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechanics, std::vector<char> fixed_vertices,
+           const std::string& where = "");
   // Replaces the reference state measured at construction (used when resuming).
   void setMaterial(MembraneMaterial material) { material_ = std::move(material); }
 
-  const std::string& name() const { return name_; }
+  // Body: its vertices.
+  const std::string& name() const override { return name_; }
+  Index numPoints() const override { return mesh_.numVertices(); }
+  void gather(double* x) const override;
+  void scatter(const double* x) override;
+  void frozen(char* mask) const override;
+
   const SurfaceMesh& mesh() const { return mesh_; }
   SurfaceMesh& mesh() { return mesh_; }
   const MeshTopology& topology() const { return topology_; }
@@ -62,14 +93,10 @@ class Membrane {
   const std::vector<char>& fixedVertices() const { return fixed_; }
   bool isClosed() const { return mesh_.isClosed(); }
 
-  void setTime(double t);
-  const MembraneCoefficients& now() const { return now_; }
-  // Target vertex areas at the current time (per-vertex area model).
-  double vertexArea0(Index v) const { return material_.vertex_area0[v] * vertex_area0_scale_; }
-
-  // Offset of this membrane's first coordinate in the global coordinate vector.
-  Index dofOffset() const { return dof_offset_; }
-  void setDofOffset(Index offset) { dof_offset_ = offset; }
+  // Target area (nm^2) at time t: target_area, else the initial area.
+  double targetArea(double t) const {
+    return mechanics_.target_area.isSet() ? mechanics_.target_area.at(t) : material_.initial_area;
+  }
 
   // Remeshes (remesh.hpp), carrying fixed flags and material areas along, and
   // accumulates the operation counts. Connectivity and vertex count change: the caller
@@ -93,9 +120,6 @@ class Membrane {
   MembraneMechanics mechanics_;
   MembraneMaterial material_;
   std::vector<char> fixed_;
-  MembraneCoefficients now_;
-  double vertex_area0_scale_ = 1.0;
-  Index dof_offset_ = 0;
   std::optional<RemeshSettings> remeshing_;
   RemeshStats remesh_totals_;
   MeshGeometry cache_;

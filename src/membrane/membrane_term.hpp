@@ -17,7 +17,7 @@ class MembraneTerm : public EnergyTerm {
  protected:
   // Gradient block of this membrane inside the global gradient (null if not wanted).
   double* gradientOf(const Evaluation& e) const {
-    return e.gradient ? e.gradient + 3 * membrane_.dofOffset() : nullptr;
+    return e.gradient ? e.gradient + 3 * membrane_.offset() : nullptr;
   }
   Membrane& membrane_;
 

@@ -10,9 +10,9 @@ namespace cortex {
 double RegularizationEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
   const MeshTopology& topo = membrane_.topology();
-  const double k = membrane_.now().k_regularization;
+  const double k = k_;
   const double c = 1.0 / (4.0 * std::sqrt(3.0));
-  const double* x = e.x + 3 * membrane_.dofOffset();
+  const double* x = e.x + 3 * membrane_.offset();
   const Index nf = topo.numFaces();
   const double mean_area = g.area / nf;
   auto edgesOf = [&](Index f) {

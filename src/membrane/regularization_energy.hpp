@@ -22,10 +22,16 @@ namespace cortex {
 
 class RegularizationEnergy final : public MembraneTerm {
  public:
-  explicit RegularizationEnergy(Membrane& m) : MembraneTerm(m, "regularization") {}
+  RegularizationEnergy(Membrane& m, RegularizationParameters p)
+      : MembraneTerm(m, "regularization"), p_(std::move(p)) {
+    setTime(0.0);
+  }
   double evaluate(const Evaluation& e) override;
+  void setTime(double t) override { k_ = p_.strength.at(t); }
 
  private:
+  RegularizationParameters p_;
+  double k_ = 0.0;
   std::vector<Vec3> corner_gradient_;
 };
 

@@ -10,10 +10,18 @@
 
 namespace cortex {
 
+ChemistryModel chemistryModel(const ChemistryConfig& config) {
+  ChemistryModel model;
+  model.volumes = gridGraph(config.grid);
+  model.species = config.species;
+  model.addReactions("config", config.reactions);
+  return model;
+}
+
 std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed,
                                const std::vector<std::vector<double>>& volume_weights) {
-  const Index compartments = config.model.grid.count();
-  const auto species = static_cast<Index>(config.model.species.size());
+  const Index compartments = config.grid.count();
+  const auto species = static_cast<Index>(config.species.size());
   std::vector<int> copies(static_cast<std::size_t>(compartments) * species, 0);
   RandomStream random(seed, StreamId::kInitialConditions);
   for (Index s = 0; s < species; ++s) {
@@ -27,7 +35,7 @@ std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed
         throw InputError(fmt::format(
             "[[species]] \"{}\": {} \"{}\" has no volume inside the compartment grid (does the membrane "
             "lie outside the box [0, shape*size]?), so its {} copies have nowhere to go",
-            config.model.species[s].name, config.sides[s].outside ? "outside" : "inside",
+            config.species[s].name, config.sides[s].outside ? "outside" : "inside",
             config.sides[s].membrane, config.initial_copies[s]));
     }
     // One uniform number per copy either way, so unconfined species draw as before.
@@ -47,11 +55,6 @@ std::vector<int> initialCopies(const ChemistryConfig& config, std::uint64_t seed
     }
   }
   return copies;
-}
-
-std::unique_ptr<ChemistryEngine> buildChemistry(const ChemistryConfig& config, std::uint64_t seed,
-                                                const std::vector<std::vector<double>>& volume_weights) {
-  return makeChemistryEngine(config.engine, config.model, initialCopies(config, seed, volume_weights), seed);
 }
 
 }  // namespace cortex

@@ -6,11 +6,13 @@
 
 #include "chem/compartment_slicing.hpp"
 #include "core/error.hpp"
+#include "sim/system.hpp"
 
 namespace cortex {
 
-std::vector<std::optional<SideFractions>> speciesFractions(const System& system, const std::vector<SpeciesSide>& sides,
-                                                           const CompartmentGrid& grid) {
+std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::unique_ptr<Membrane>>& membranes,
+                                                        const std::vector<SpeciesSide>& sides,
+                                                        const CompartmentGrid& grid) {
   std::vector<std::optional<SideFractions>> out(sides.size());
   std::map<std::string, CompartmentSlices> slices;
   for (std::size_t s = 0; s < sides.size(); ++s) {
@@ -19,7 +21,7 @@ std::vector<std::optional<SideFractions>> speciesFractions(const System& system,
     auto it = slices.find(side.membrane);
     if (it == slices.end()) {
       const Membrane* m = nullptr;
-      for (const auto& candidate : system.membranes())
+      for (const auto& candidate : membranes)
         if (candidate->name() == side.membrane) m = candidate.get();
       const char* key = side.outside ? "outside" : "inside";
       if (!m) throw InputError(fmt::format("[[species]] {}: no membrane is named \"{}\"", key, side.membrane));
@@ -39,19 +41,29 @@ std::vector<std::optional<SideFractions>> speciesFractions(const System& system,
   return out;
 }
 
-void confineChemistry(System& system) {
-  ChemistryEngine* engine = system.chemistry();
-  if (!engine) return;
-  const CompartmentGrid& grid = system.chemistryModel().grid;
+ConfinementFeedback::ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine,
+                                         const ReactionRange& config_reactions)
+    : grid_(config.grid),
+      sides_(config.sides),
+      restrictions_(config.reaction_restrictions),
+      engine_(engine),
+      factors_(engine.claimRateFactors(config_reactions)) {
+  active_ = false;
+  for (const SpeciesSide& s : sides_) active_ = active_ || !s.membrane.empty();
+  for (const ReactionRestriction& r : restrictions_) active_ = active_ || r.restricted();
+}
+
+void ConfinementFeedback::update(System& system) {
+  if (!active_) return;
   // Species sides first, then reaction sides: each membrane is sliced once for both.
-  std::vector<SpeciesSide> sides = system.speciesSides();
+  std::vector<SpeciesSide> sides = sides_;
   const std::size_t species = sides.size();
-  for (const ReactionRestriction& r : system.reactionRestrictions()) sides.push_back(r.side);
-  const auto fractions = speciesFractions(system, sides, grid);
+  for (const ReactionRestriction& r : restrictions_) sides.push_back(r.side);
+  const auto fractions = sideFractions(system.membranes(), sides, grid_);
   for (std::size_t s = 0; s < species; ++s) {
     if (!fractions[s]) continue;
     try {
-      engine->setConfinement(static_cast<Index>(s), fractions[s]->volume, fractions[s]->faces);
+      engine_.setConfinement(static_cast<Index>(s), fractions[s]->volume, gridEdgeValues(grid_, fractions[s]->faces));
     } catch (const std::runtime_error& e) {
       // The membrane moved so that a confined species with copies has no volume left.
       throw RunError(fmt::format("t = {:.6g} s: species \"{}\" lost all its volume inside the compartment grid: {}",
@@ -61,14 +73,14 @@ void confineChemistry(System& system) {
   // A restricted reaction fires at the rate of the part of each compartment it may use:
   // none outside its box, and the volume fraction on its side of a membrane (reactants
   // spread uniformly over the compartment, so that fraction of them is there).
-  for (std::size_t r = 0; r < system.reactionRestrictions().size(); ++r) {
-    const ReactionRestriction& restriction = system.reactionRestrictions()[r];
+  for (std::size_t r = 0; r < restrictions_.size(); ++r) {
+    const ReactionRestriction& restriction = restrictions_[r];
     if (!restriction.restricted()) continue;
     const auto& side = fractions[species + r];
-    for (Index c = 0; c < grid.count(); ++c) {
+    for (Index c = 0; c < grid_.count(); ++c) {
       double factor = side ? side->volume[c] : 1.0;
-      if (restriction.region && !restriction.region->contains(grid.centre(c))) factor = 0.0;
-      engine->setRateFactor(static_cast<Index>(r), c, factor);
+      if (restriction.region && !restriction.region->contains(grid_.centre(c))) factor = 0.0;
+      factors_.set(factors_.range().begin + static_cast<Index>(r), c, factor);
     }
   }
 }

@@ -1,30 +1,46 @@
 // Membrane confinement of 3D species (thesis 2.2.4.2): slices the membranes that confine
-// species and hands each species the fractions of its side to the engine. Recomputed
-// from the membranes alone, so a checkpoint needs to store nothing for it.
+// species and hands each species the fractions of its side to the engine, and sets the
+// rate factors of the config's reactions limited to a box or a side of a membrane (it
+// owns those factors). Recomputed from the membranes alone, so a checkpoint needs to
+// store nothing for it.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
-#include "sim/system.hpp"
+#include "sim/feedback.hpp"
+#include "sim/run_config.hpp"
 
 namespace cortex {
 
 struct SideFractions {
   std::vector<double> volume;                // per compartment
-  std::vector<std::array<double, 6>> faces;  // per compartment, -x, +x, -y, +y, -z, +z
+  std::vector<std::array<double, 6>> faces;  // per compartment, in GridFace order
 };
 
-// Per species: the fractions of its side, or nothing when unconfined. Each confining
+// Per side: the fractions of the grid on that side, or nothing for an empty side. Each
 // membrane is sliced once. Throws InputError for a membrane that does not exist or is
 // not closed (loaded meshes are only known to be closed once read).
-std::vector<std::optional<SideFractions>> speciesFractions(const System& system, const std::vector<SpeciesSide>& sides,
-                                                           const CompartmentGrid& grid);
+std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::unique_ptr<Membrane>>& membranes,
+                                                        const std::vector<SpeciesSide>& sides,
+                                                        const CompartmentGrid& grid);
 
-// Re-slices and applies to the engine: species confinement, and the rate factors of
-// reactions restricted to a box or a side of a membrane. Called when the engine is
-// built or restored and after every relaxation (membranes move).
-void confineChemistry(System& system);
+class ConfinementFeedback final : public Feedback {
+ public:
+  // `config_reactions`: the range of the config's reactions in the engine's model.
+  ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine, const ReactionRange& config_reactions);
+  // Re-slices and applies: after every relaxation (membranes move and are remeshed).
+  void update(System& system) override;
+
+ private:
+  CompartmentGrid grid_;
+  std::vector<SpeciesSide> sides_;                      // per species
+  std::vector<ReactionRestriction> restrictions_;       // per config reaction
+  ChemistryEngine& engine_;
+  RateFactors factors_;
+  bool active_;  // anything confined or restricted at all
+};
 
 }  // namespace cortex

@@ -79,4 +79,8 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
   return network;
 }
 
+FilamentState filamentState(const FilamentNetwork& network) {
+  return {network.filaments(), network.linkers(), network.motors(), network.branches()};
+}
+
 }  // namespace cortex

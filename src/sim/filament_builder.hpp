@@ -7,19 +7,16 @@
 #include <optional>
 
 #include "filament/filament_network.hpp"
+#include "sim/system_state.hpp"
 
 namespace cortex {
-
-// The network's whole state, as a checkpoint stores it.
-struct FilamentState {
-  std::vector<Filament> filaments;
-  std::vector<Binding> linkers, motors;
-  std::vector<Branch> branches;
-};
 
 // box: the compartment grid's box (where filaments go without a [boundary]).
 std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& config, const Vec3& box_min,
                                                       const Vec3& box_max, std::uint64_t seed,
                                                       const FilamentState* restored);
+
+// The state a checkpoint stores.
+FilamentState filamentState(const FilamentNetwork& network);
 
 }  // namespace cortex

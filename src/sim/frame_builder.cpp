@@ -50,11 +50,11 @@ Frame makeFrame(const System& system) {
     mf.name = m->name();
     for (const Vec3& p : m->mesh().positions()) mf.vertices.insert(mf.vertices.end(), {p.x(), p.y(), p.z()});
     for (const Tri& t : m->topology().triangles) mf.triangles.insert(mf.triangles.end(), t.begin(), t.end());
-    mf.mean_curvature = vertexMeanCurvature(m->currentGeometry(), m->topology(), m->mechanics().curvature);
+    mf.mean_curvature = vertexMeanCurvature(m->currentGeometry(), m->topology(), m->mechanics().bending.estimator);
     frame.membranes.push_back(std::move(mf));
   }
   if (const ChemistryEngine* chem = system.chemistry()) {
-    const CompartmentGrid& g = system.chemistryModel().grid;
+    const CompartmentGrid& g = system.grid();
     frame.grid_shape = {g.shape[0], g.shape[1], g.shape[2]};
     for (Index s = 0; s < static_cast<Index>(system.chemistryModel().species.size()); ++s) {
       SpeciesField field{system.chemistryModel().species[s].name, {}};

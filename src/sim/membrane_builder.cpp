@@ -18,7 +18,7 @@ TriangleSoup initialMesh(const MembraneConfig& c) {
   if (c.shape == "sphere") return meshImplicitSurface(implicitSphere(c.center, c.radii[0]), c.mesh_size);
   if (c.shape == "ellipsoid") return meshImplicitSurface(implicitEllipsoid(c.center, c.radii), c.mesh_size);
   if (c.shape == "plane") return planarPatch(c.center, c.size[0], c.size[1], c.mesh_size);
-  return readMeshFile(c.file);
+  return c.soup ? *c.soup : readMeshFile(c.file);
 }
 
 namespace {
@@ -53,7 +53,7 @@ void reverseOrientation(TriangleSoup& soup) {
 }  // namespace
 
 std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::string& source,
-                                        const std::optional<MembraneState>& restored) {
+                                        const MembraneState* restored) {
   const std::string where = fmt::format("{}: membrane \"{}\"", source, c.name);
   TriangleSoup soup = restored ? restored->mesh : initialMesh(c);
   const std::string mesh_source = c.shape == "mesh" && !restored ? c.file.string() : where;
@@ -66,19 +66,13 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     fixed.resize(mesh.numVertices(), 0);
     for (Index v = 0; v < mesh.numVertices(); ++v) fixed[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
   }
-  auto membrane = std::make_unique<Membrane>(c.name, std::move(mesh), c.mechanics, fixed);
+  auto membrane = std::make_unique<Membrane>(c.name, std::move(mesh), c.mechanics, fixed, where);
 
   if (!restored && membrane->isClosed() && membrane->material().initial_volume < 0.0) {
     // A closed mesh whose triangles face inwards: flip it rather than simulate inside-out.
     spdlog::warn("{}: mesh triangles are oriented inwards; reversing them", where);
     reverseOrientation(soup);
-    membrane = std::make_unique<Membrane>(c.name, SurfaceMesh::fromSoup(soup, mesh_source), c.mechanics, fixed);
-  }
-  if (!membrane->isClosed()) {
-    const MembraneMechanics& m = c.mechanics;
-    if (m.reduced_volume.isSet() || m.target_volume.isSet() || !m.volume_modulus.isZero())
-      throw InputError(fmt::format("{}: the mesh is open (has a boundary), so volume_modulus, "
-                                   "reduced_volume and target_volume cannot apply", where));
+    membrane = std::make_unique<Membrane>(c.name, SurfaceMesh::fromSoup(soup, mesh_source), c.mechanics, fixed, where);
   }
   if (restored) {
     membrane->setMaterial(restored->material);
@@ -87,8 +81,17 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
   if (c.remesh)
     membrane->setRemeshing(restored && restored->remeshing ? *restored->remeshing
                                                            : remeshSettings(c, membrane->mesh(), where));
-  membrane->setTime(0.0);
   return membrane;
+}
+
+MembraneState membraneState(const Membrane& m) {
+  MembraneState s;
+  s.mesh = {m.mesh().positions(), m.topology().triangles};
+  s.fixed = m.fixedVertices();
+  s.material = m.material();
+  s.remesh_totals = m.remeshTotals();
+  s.remeshing = m.remeshing();
+  return s;
 }
 
 }  // namespace cortex

@@ -3,28 +3,19 @@
 #pragma once
 
 #include <memory>
-#include <optional>
 
 #include "sim/run_config.hpp"
-#include "membrane/membrane.hpp"
+#include "sim/system_state.hpp"
 
 namespace cortex {
 
-// The part of a membrane's state that a checkpoint stores.
-struct MembraneState {
-  TriangleSoup mesh;
-  std::vector<char> fixed;
-  MembraneMaterial material;
-  RemeshStats remesh_totals;
-  // The remesher's settings as resolved at the start (a loaded mesh's defaults come from
-  // its original edge lengths, which remeshing changes).
-  std::optional<RemeshSettings> remeshing;
-};
-
 std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& config, const std::string& source,
-                                        const std::optional<MembraneState>& restored = std::nullopt);
+                                        const MembraneState* restored = nullptr);
 
 // The initial mesh a config describes (generated or read from file), validated.
 TriangleSoup initialMesh(const MembraneConfig& config);
+
+// The state a checkpoint stores.
+MembraneState membraneState(const Membrane& membrane);
 
 }  // namespace cortex

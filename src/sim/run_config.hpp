@@ -1,10 +1,11 @@
-// Typed parameters of a run, as parsed and validated by io/config.cpp. They live in
-// sim/ so that the simulation depends on parameters, never on the file format.
+// Typed parameters of a run, as parsed and validated by io/config.cpp, or written in
+// C++ by tests and benchmarks. They live in sim/ so that the simulation depends on
+// parameters, never on the file format: a System is built from a Config alone.
 #pragma once
 
 #include <array>
-#include <optional>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "filament/filament_params.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
+#include "mesh/triangle_soup.hpp"
 
 namespace cortex {
 
@@ -32,20 +34,13 @@ struct MembraneConfig {
   Vec3 center = Vec3::Zero();
   Vec3 radii = Vec3::Zero();           // sphere: all equal
   std::array<double, 2> size{0, 0};    // plane
-  std::filesystem::path file;          // mesh
+  std::filesystem::path file;          // mesh: an OBJ or PLY file,
+  std::optional<TriangleSoup> soup;    // or the triangles themselves (programs and tests)
   double mesh_size = 0.0;              // nm
   MembraneMechanics mechanics;
   bool remesh = false;
   double min_size = 0.0, max_size = 0.0;  // nm
   double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)
-};
-
-// Initial amount of a 3D species: copies in the whole box (or, when confined, in the
-// volume on its side of the membrane), spread uniformly at random in that volume.
-struct SpeciesConfig {
-  SpeciesDef def;
-  std::int64_t copies = 0;
-  SpeciesSide side;
 };
 
 // An axis-aligned box (nm): a reaction with a region fires only in the compartments
@@ -63,12 +58,17 @@ struct ReactionRestriction {
   bool restricted() const { return region.has_value() || !side.membrane.empty(); }
 };
 
+// The 3D chemistry of the config: its grid, species and reactions (rates in config
+// units), and how each species starts. Modules append their own reactions when the
+// System is assembled.
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
-  ChemistryModel model;                 // grid, species, reactions (rates in config units)
-  std::vector<std::int64_t> initial_copies;  // per species, whole box
+  CompartmentGrid grid;
+  std::vector<SpeciesDef> species;
+  std::vector<ReactionDef> reactions;
+  std::vector<std::int64_t> initial_copies;                // per species: in the whole box (or its side)
   std::vector<ReactionRestriction> reaction_restrictions;  // per reaction
-  std::vector<SpeciesSide> sides;            // per species
+  std::vector<SpeciesSide> sides;                          // per species
 };
 
 struct Config {

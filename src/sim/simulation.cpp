@@ -8,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "mesh/mesh_quality.hpp"
-#include "sim/confinement.hpp"
 
 namespace cortex {
 
@@ -99,11 +98,10 @@ MinimizationResult Simulation::relax() {
   }
   remeshMembranes();
   checkMeshes();
-  // The membranes moved (and may have been remeshed): re-slice the grid for confined species.
-  confineChemistry(system_);
-  // Filaments moved: loads, tensions and binding partners change the filament rates.
+  // Membranes and filaments moved: confinement, loads, tensions and binding partners
+  // change the rates.
   const auto feedback_start = std::chrono::steady_clock::now();
-  system_.updateMechanochemistry();
+  system_.updateFeedback();
   c.feedback_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feedback_start).count();
   if (!r.converged) {
     ++c.unconverged_minimizations;

@@ -1,83 +1,140 @@
 #include "sim/system.hpp"
 
-#include "filament/boundary_energy.hpp"
-#include "filament/branch_energy.hpp"
-#include "filament/excluded_volume_energy.hpp"
-#include "filament/filament_bending_energy.hpp"
-#include "filament/spring_energy.hpp"
-#include "filament/stretching_energy.hpp"
-#include "membrane/area_energy.hpp"
-#include "membrane/bending_energy.hpp"
-#include "membrane/regularization_energy.hpp"
-#include "membrane/volume_energy.hpp"
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "filament/filament_terms.hpp"
+#include "membrane/membrane_terms.hpp"
+#include "sim/chemistry_builder.hpp"
+#include "sim/confinement.hpp"
+#include "sim/filament_builder.hpp"
+#include "sim/filament_feedback.hpp"
+#include "sim/membrane_builder.hpp"
 
 namespace cortex {
 
-System::System(std::vector<std::unique_ptr<Membrane>> membranes) : membranes_(std::move(membranes)) {
-  buildForceField();
-}
-
-void System::buildForceField() {
-  force_field_ = ForceField();
-  for (auto& m : membranes_) {
-    const MembraneMechanics& mech = m->mechanics();
-    // Terms whose modulus is zero at all times are left out: they cost time and add nothing.
-    if (!mech.bending_modulus.isZero()) force_field_.add(std::make_unique<BendingEnergy>(*m));
-    if (!mech.area_modulus.isZero()) {
-      if (mech.area_model == AreaModel::kPerVertex)
-        force_field_.add(std::make_unique<PerVertexAreaEnergy>(*m));
-      else if (mech.area_model == AreaModel::kGlobal)
-        force_field_.add(std::make_unique<GlobalAreaEnergy>(*m));
+System::System(const Config& config, const SystemState* restored) {
+  const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
+  // Bodies: membranes in config order, then the filament network.
+  for (const MembraneConfig& mc : config.membranes) {
+    const MembraneState* state = nullptr;
+    if (restored) {
+      const auto it = restored->membranes.find(mc.name);
+      if (it == restored->membranes.end()) throw InputError(fmt::format("checkpoint has no membrane \"{}\"", mc.name));
+      state = &it->second;
     }
-    if (!mech.tension.isZero()) force_field_.add(std::make_unique<TensionEnergy>(*m));
-    if (!mech.regularization.isZero()) force_field_.add(std::make_unique<RegularizationEnergy>(*m));
-    if (!mech.volume_modulus.isZero() && m->isClosed()) force_field_.add(std::make_unique<VolumeEnergy>(*m));
+    membranes_.push_back(buildMembrane(mc, config.source, state));
+  }
+  if (config.chemistry) grid_ = config.chemistry->grid;  // else the default grid bounds the filaments
+  if (config.filaments) {
+    if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
+    try {
+      filaments_ = buildFilamentNetwork(*config.filaments, Vec3::Zero(), grid_.extent(), seed,
+                                        restored ? &*restored->filaments : nullptr);
+    } catch (const InputError& e) {
+      // Placement names the [[filaments]] table; say which file it is in.
+      if (restored) throw;
+      throw InputError(fmt::format("{}: {}", config.source, e.what()));
+    }
+  }
+  for (auto& m : membranes_) bodies_.push_back(m.get());
+  if (filaments_) bodies_.push_back(filaments_.get());
+  if (restored) {
+    std::vector<std::string> names;
+    for (const Body* b : bodies_) names.push_back(b->name());
+    if (names != restored->bodies)
+      throw InputError("checkpoint: its bodies (membranes, filaments) are not the config's, in the config's order");
   }
   layOut();
+
+  // Every module's energy terms, in body order.
+  for (auto& m : membranes_) addMembraneTerms(*m, force_field_);
+  FilamentTerms filament_terms;
+  if (filaments_) filament_terms = addFilamentTerms(*filaments_, force_field_);
+  if (config.chemistry) buildChemistry(config, restored, filament_terms);
+
+  if (restored) {
+    time_ = restored->time;
+    step = restored->step;
+    counters = restored->counters;
+    force_field_.restoreCounters(restored->force_evaluations, restored->energy_evaluations);
+  }
+  setTime(time_);
+  // Confinement and force-dependent rates follow from the positions: nothing is stored.
+  updateFeedback();
 }
 
-void System::setFilaments(std::unique_ptr<FilamentNetwork> network) {
-  filaments_ = std::move(network);
-  const FilamentLayout& layout = filaments_->layout();
-  const FilamentConfig& config = filaments_->config();
-  force_field_.add(std::make_unique<FilamentStretchingEnergy>(layout, config.types));
-  force_field_.add(std::make_unique<FilamentBendingEnergy>(layout, config.types));
-  force_field_.add(std::make_unique<CylinderExclusionEnergy>(layout, config.types, 40.0));
-  if (config.boundary) force_field_.add(std::make_unique<BoundaryRepulsionEnergy>(layout, *config.boundary));
-  if (!config.linkers.empty()) force_field_.add(std::make_unique<SpringEnergy>(layout, layout.linkers, "linkers"));
-  if (!config.motors.empty()) force_field_.add(std::make_unique<SpringEnergy>(layout, layout.motors, "motors"));
-  if (!config.branchers.empty()) force_field_.add(std::make_unique<BranchEnergy>(layout));
-  layOut();
+System::~System() = default;
+
+void System::buildChemistry(const Config& config, const SystemState* restored, const FilamentTerms& filament_terms) {
+  const ChemistryConfig& cc = *config.chemistry;
+  const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
+  chemistry_model_ = cortex::chemistryModel(cc);
+  const ReactionRange config_reactions = chemistry_model_.ranges.front();
+  if (filaments_) {
+    filament_chemistry_ = std::make_unique<FilamentChemistry>(
+        *filaments_, grid_, chemistry_model_.species, constants::kBoltzmann * config.simulation.temperature);
+    filament_chemistry_->addReactions(chemistry_model_);
+  }
+  if (restored) {
+    if (!restored->chemistry) throw InputError("checkpoint has no chemistry, the config has");
+    const ChemistryState& s = *restored->chemistry;
+    if (s.copies.size() != static_cast<std::size_t>(grid_.count()) * chemistry_model_.species.size() ||
+        s.reaction_events.size() != chemistry_model_.reactions.size())
+      throw InputError("checkpoint chemistry does not match the config (grid, species or reactions changed)");
+    chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, s.copies, seed);
+    chemistry_->restore(s);
+  } else {
+    // Confined species start uniform in the volume on their side of the membrane.
+    std::vector<std::vector<double>> weights(cc.sides.size());
+    const auto fractions = sideFractions(membranes_, cc.sides, grid_);
+    for (std::size_t s = 0; s < fractions.size(); ++s)
+      if (fractions[s]) weights[s] = fractions[s]->volume;
+    chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, initialCopies(cc, seed, weights), seed);
+  }
+  feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_reactions));
+  if (filament_chemistry_) {
+    filament_chemistry_->attach(*chemistry_);
+    feedback_.push_back(std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_));
+  }
 }
 
-void System::setFilamentChemistry(std::unique_ptr<FilamentChemistry> chemistry) {
-  filament_chemistry_ = std::move(chemistry);
-  if (chemistry_) chemistry_->setReactionHook(filament_chemistry_.get());
+SystemState System::state() const {
+  SystemState s;
+  s.time = time_;
+  s.step = step;
+  s.counters = counters;
+  s.force_evaluations = force_field_.forceEvaluations();
+  s.energy_evaluations = force_field_.energyEvaluations();
+  for (const Body* b : bodies_) s.bodies.push_back(b->name());
+  for (const auto& m : membranes_) s.membranes.emplace(m->name(), membraneState(*m));
+  if (chemistry_) s.chemistry = chemistry_->state();
+  if (filaments_) s.filaments = filamentState(*filaments_);
+  return s;
 }
 
-void System::updateMechanochemistry() {
-  if (filament_chemistry_ && chemistry_) filament_chemistry_->updateMechanochemistry(*chemistry_);
+void System::updateFeedback() {
+  for (auto& f : feedback_) f->update(*this);
 }
 
 void System::layOut() {
   Index offset = 0;
+  for (Body* b : bodies_) {
+    b->setOffset(offset);
+    offset += b->numPoints();
+  }
+  std::vector<char> points(static_cast<std::size_t>(offset), 0);
+  for (const Body* b : bodies_) b->frozen(points.data() + b->offset());
   std::vector<char> frozen;
-  for (auto& m : membranes_) {
-    m->setDofOffset(offset);
-    offset += m->mesh().numVertices();
-    for (char f : m->fixedVertices()) frozen.insert(frozen.end(), 3, f);
-  }
-  if (filaments_) {
-    filaments_->layOut(offset);
-    for (const Filament& f : filaments_->filaments())
-      for (std::size_t b = 0; b < f.beads.size(); ++b) frozen.insert(frozen.end(), 3, b == 0 && f.minus_anchored);
-  }
+  frozen.reserve(3 * points.size());
+  for (char p : points) frozen.insert(frozen.end(), 3, p);
   force_field_.setFrozen(std::move(frozen));
 }
 
 void System::setTime(double t) {
   time_ = t;
-  for (auto& m : membranes_) m->setTime(t);
+  force_field_.setTime(t);
 }
 
 Index System::numVertices() const {
@@ -87,25 +144,19 @@ Index System::numVertices() const {
 }
 
 Index System::numDegreesOfFreedom() const {
-  return 3 * (numVertices() + (filaments_ ? filaments_->numBeads() : 0));
+  Index n = 0;
+  for (const Body* b : bodies_) n += b->numPoints();
+  return 3 * n;
 }
 
 Eigen::VectorXd System::coordinates() const {
   Eigen::VectorXd x(numDegreesOfFreedom());
-  if (filaments_) filaments_->gather(x.data());
-  for (const auto& m : membranes_) {
-    const auto& p = m->mesh().positions();
-    for (std::size_t i = 0; i < p.size(); ++i) x.segment<3>(3 * (m->dofOffset() + i)) = p[i];
-  }
+  for (const Body* b : bodies_) b->gather(x.data() + 3 * b->offset());
   return x;
 }
 
 void System::setCoordinates(const Eigen::VectorXd& x) {
-  if (filaments_) filaments_->scatter(x.data());
-  for (auto& m : membranes_) {
-    auto& p = m->mesh().positions();
-    for (std::size_t i = 0; i < p.size(); ++i) p[i] = x.segment<3>(3 * (m->dofOffset() + i));
-  }
+  for (Body* b : bodies_) b->scatter(x.data() + 3 * b->offset());
 }
 
 }  // namespace cortex

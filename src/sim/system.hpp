@@ -1,5 +1,8 @@
-// All simulation state in one object: the membranes, the force field over their
-// coordinates, the clock and the counters. Passed explicitly; no globals.
+// All simulation state in one object, assembled in one place (system.cpp) from a typed
+// Config and, when resuming, the stored SystemState: the bodies (membranes, then the
+// filament network) laid out in one coordinate vector, the force field of every module's
+// terms, the chemistry with every module's reactions, the feedback between them, the
+// clock and the counters. Passed explicitly; no globals, no setters whose order matters.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,89 +12,73 @@
 #include "chem/chemistry_engine.hpp"
 #include "filament/filament_chemistry.hpp"
 #include "filament/filament_network.hpp"
+#include "filament/filament_terms.hpp"
 #include "mech/force_field.hpp"
-#include "sim/run_config.hpp"
 #include "membrane/membrane.hpp"
+#include "sim/feedback.hpp"
+#include "sim/run_config.hpp"
+#include "sim/system_state.hpp"
 
 namespace cortex {
 
-struct RunCounters {
-  std::int64_t minimizations = 0;
-  std::int64_t minimizer_iterations = 0;
-  std::int64_t unconverged_minimizations = 0;
-  double last_max_force = 0.0;  // pN, after the latest minimization
-  double mechanics_seconds = 0.0;
-  double remesh_seconds = 0.0;
-  double chemistry_seconds = 0.0;
-  double feedback_seconds = 0.0;  // filament rates after each minimization (incl. binding-pair search)
-};
-
 class System {
  public:
-  // Takes ownership of the membranes, lays out their coordinates and builds the force field.
-  explicit System(std::vector<std::unique_ptr<Membrane>> membranes);
+  // Throws InputError for a config that cannot be built, or a state that does not match it.
+  explicit System(const Config& config, const SystemState* restored = nullptr);
+  ~System();
+  System(const System&) = delete;
+  System& operator=(const System&) = delete;
 
-  // 3D reaction-diffusion, if the config has species; `sides` per species (may be empty:
-  // nothing confined).
-  void setChemistry(ChemistryModel model, std::unique_ptr<ChemistryEngine> engine,
-                    std::vector<SpeciesSide> sides = {}) {
-    chemistry_model_ = std::move(model);
-    chemistry_ = std::move(engine);
-    species_sides_ = std::move(sides);
-  }
-  const std::vector<SpeciesSide>& speciesSides() const { return species_sides_; }
-  // Per reaction: where it may fire (run_config.hpp); applied with the confinement.
-  void setReactionRestrictions(std::vector<ReactionRestriction> r) { reaction_restrictions_ = std::move(r); }
-  const std::vector<ReactionRestriction>& reactionRestrictions() const { return reaction_restrictions_; }
+  // The state a checkpoint stores (System(config, &state) continues from it).
+  SystemState state() const;
+
+  // --- bodies and mechanics --------------------------------------------------------
+  const std::vector<Body*>& bodies() const { return bodies_; }
+  std::vector<std::unique_ptr<Membrane>>& membranes() { return membranes_; }
+  const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
+  FilamentNetwork* filaments() { return filaments_.get(); }
+  const FilamentNetwork* filaments() const { return filaments_.get(); }
+  ForceField& forceField() { return force_field_; }
+  const ForceField& forceField() const { return force_field_; }
+  // Recomputes every body's offset and the frozen mask after point counts changed
+  // (remeshing, chemistry); terms and the force field's counters stay.
+  void layOut();
+  // All coordinates as one vector (the minimizer's variables) and back into the bodies.
+  Eigen::VectorXd coordinates() const;
+  void setCoordinates(const Eigen::VectorXd& x);
+  Index numVertices() const;  // membrane vertices
+  Index numDegreesOfFreedom() const;
+  bool hasMechanics() const { return numDegreesOfFreedom() > 0; }
+
+  // --- chemistry ----------------------------------------------------------------------
   ChemistryEngine* chemistry() { return chemistry_.get(); }
   const ChemistryEngine* chemistry() const { return chemistry_.get(); }
   const ChemistryModel& chemistryModel() const { return chemistry_model_; }
-
-  // The cytoskeleton: adds the filament energy terms to the force field. Its chemistry
-  // (if any) is hooked into the engine by setFilamentChemistry.
-  void setFilaments(std::unique_ptr<FilamentNetwork> network);
-  void setFilamentChemistry(std::unique_ptr<FilamentChemistry> chemistry);
-  FilamentNetwork* filaments() { return filaments_.get(); }
-  const FilamentNetwork* filaments() const { return filaments_.get(); }
-  FilamentChemistry* filamentChemistry() { return filament_chemistry_.get(); }
+  const CompartmentGrid& grid() const { return grid_; }  // the default grid without chemistry
   const FilamentChemistry* filamentChemistry() const { return filament_chemistry_.get(); }
-  // After a minimization: force-dependent filament rates (mechanochemical feedback).
-  void updateMechanochemistry();
 
-  std::vector<std::unique_ptr<Membrane>>& membranes() { return membranes_; }
-  const std::vector<std::unique_ptr<Membrane>>& membranes() const { return membranes_; }
-  ForceField& forceField() { return force_field_; }
-  const ForceField& forceField() const { return force_field_; }
+  // After a relaxation: confinement and force-dependent rates follow the new positions.
+  void updateFeedback();
 
-  // Recomputes coordinate offsets, the filament layout and the frozen mask after vertex or
-  // bead counts changed (remeshing, chemistry); the energy terms and the force field's
-  // counters stay.
-  void layOut();
-
+  // --- clock --------------------------------------------------------------------------
   // Evaluates every scheduled parameter at time t.
   void setTime(double t);
   double time() const { return time_; }
   std::int64_t step = 0;  // chemistry windows completed
   RunCounters counters;
 
-  // All coordinates as one vector (the minimizer's variables) and back into the meshes.
-  Eigen::VectorXd coordinates() const;
-  void setCoordinates(const Eigen::VectorXd& x);
-  Index numVertices() const;  // membrane vertices
-  Index numDegreesOfFreedom() const;  // 3 * (vertices + filament beads)
-  bool hasMechanics() const { return !membranes_.empty() || (filaments_ && !filaments_->filaments().empty()); }
-
  private:
-  void buildForceField();
+  void buildChemistry(const Config& config, const SystemState* restored, const FilamentTerms& filament_terms);
 
   std::vector<std::unique_ptr<Membrane>> membranes_;
-  ForceField force_field_;
-  ChemistryModel chemistry_model_;
-  std::unique_ptr<ChemistryEngine> chemistry_;
-  std::vector<SpeciesSide> species_sides_;
-  std::vector<ReactionRestriction> reaction_restrictions_;
   std::unique_ptr<FilamentNetwork> filaments_;
+  std::vector<Body*> bodies_;
+  ForceField force_field_;
+  CompartmentGrid grid_;
+  ChemistryModel chemistry_model_;
   std::unique_ptr<FilamentChemistry> filament_chemistry_;
+  std::unique_ptr<ChemistryEngine> chemistry_;
+  std::vector<std::unique_ptr<Feedback>> feedback_;  // in the order they run
   double time_ = 0.0;
 };
 

@@ -6,24 +6,27 @@ ChemistryModel wellMixed(const std::vector<std::string>& species,
                          const std::vector<std::pair<std::string, double>>& reactions) {
   ChemistryModel m;
   for (const std::string& s : species) m.species.push_back({s, 0.0});
-  for (const auto& [equation, rate] : reactions) m.reactions.push_back(parseReaction(equation, rate, m.species));
+  std::vector<ReactionDef> defs;
+  for (const auto& [equation, rate] : reactions) defs.push_back(parseReaction(equation, rate, m.species));
+  m.addReactions("test", std::move(defs));
   return m;
 }
 
 ChemistryModel randomNetwork(int num_species, int num_reactions, std::uint64_t seed, const CompartmentGrid& grid,
                              double diffusion) {
   ChemistryModel m;
-  m.grid = grid;
+  m.volumes = gridGraph(grid);
+  std::vector<ReactionDef> defs;
   for (int s = 0; s < num_species; ++s) m.species.push_back({"X" + std::to_string(s), diffusion});
   RandomStream rng(seed, StreamId::kInitialConditions);
   const auto pick = [&] { return "X" + std::to_string(static_cast<int>(rng.uniform() * num_species)); };
   const double nv = grid.copiesPerMicromolar();
   for (int s = 0; s < num_species; ++s) {
     const std::string x = "X" + std::to_string(s);
-    m.reactions.push_back(parseReaction("-> " + x, (2.0 + 4.0 * rng.uniform()) / nv, m.species));
-    m.reactions.push_back(parseReaction(x + " ->", 0.5 + rng.uniform(), m.species));
+    defs.push_back(parseReaction("-> " + x, (2.0 + 4.0 * rng.uniform()) / nv, m.species));
+    defs.push_back(parseReaction(x + " ->", 0.5 + rng.uniform(), m.species));
   }
-  while (static_cast<int>(m.reactions.size()) < num_reactions) {
+  while (static_cast<int>(defs.size()) < num_reactions) {
     // Draws in separate statements: the operands of + are evaluated in unspecified order.
     const double u = rng.uniform();
     const double first = 0.2 + 0.8 * rng.uniform();            // 1/s
@@ -31,14 +34,15 @@ ChemistryModel randomNetwork(int num_species, int num_reactions, std::uint64_t s
     std::string x[4];
     for (std::string& name : x) name = pick();
     if (u < 0.4)
-      m.reactions.push_back(parseReaction(x[0] + " -> " + x[1], first, m.species));
+      defs.push_back(parseReaction(x[0] + " -> " + x[1], first, m.species));
     else if (u < 0.7)
-      m.reactions.push_back(parseReaction(x[0] + " + " + x[1] + " -> " + x[2], second, m.species));
+      defs.push_back(parseReaction(x[0] + " + " + x[1] + " -> " + x[2], second, m.species));
     else if (u < 0.8)
-      m.reactions.push_back(parseReaction("2 " + x[0] + " -> " + x[1], second, m.species));
+      defs.push_back(parseReaction("2 " + x[0] + " -> " + x[1], second, m.species));
     else
-      m.reactions.push_back(parseReaction(x[0] + " + " + x[1] + " -> " + x[2] + " + " + x[3], second, m.species));
+      defs.push_back(parseReaction(x[0] + " + " + x[1] + " -> " + x[2] + " + " + x[3], second, m.species));
   }
+  m.addReactions("test", std::move(defs));
   return m;
 }
 

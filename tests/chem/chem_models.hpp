@@ -12,7 +12,8 @@ namespace cortex::chemtest {
 
 inline const char* engineName(EngineKind kind) { return kind == EngineKind::kNextSubvolume ? "nsm" : "direct"; }
 
-// Non-diffusing species in one 500 nm compartment with the given reactions (equation, rate).
+// Non-diffusing species in one 500 nm compartment with the given reactions (equation, rate),
+// owned by "test".
 ChemistryModel wellMixed(const std::vector<std::string>& species,
                          const std::vector<std::pair<std::string, double>>& reactions);
 

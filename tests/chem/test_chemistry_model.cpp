@@ -85,28 +85,47 @@ TEST(ParseReaction, RefusesMalformedEquationsNamingThem) {
 TEST(StochasticRateConstant, ConvertsConcentrationUnitsToCopies) {
   const double volume = 500.0 * 500.0 * 500.0;               // nm^3 = 0.125 fL
   const double nv = kCopiesPerMicromolarFemtoliter * 0.125;  // copies per µM
-  EXPECT_NEAR(stochasticRateConstant(parseReaction("-> A", 2.0, kSpecies), volume), 2.0 * nv, 1e-12 * nv);
-  EXPECT_DOUBLE_EQ(stochasticRateConstant(parseReaction("A -> B", 3.0, kSpecies), volume), 3.0);
-  EXPECT_NEAR(stochasticRateConstant(parseReaction("A + B -> C", 5.0, kSpecies), volume), 5.0 / nv, 1e-12);
-  EXPECT_NEAR(stochasticRateConstant(parseReaction("2 A -> C", 5.0, kSpecies), volume), 5.0 / nv, 1e-12);
+  auto constant = [&](const char* equation, double rate) {
+    const ReactionDef r = parseReaction(equation, rate, kSpecies);
+    return stochasticRateConstant(r.rate, r.order(), volume);
+  };
+  EXPECT_NEAR(constant("-> A", 2.0), 2.0 * nv, 1e-12 * nv);
+  EXPECT_DOUBLE_EQ(constant("A -> B", 3.0), 3.0);
+  EXPECT_NEAR(constant("A + B -> C", 5.0), 5.0 / nv, 1e-12);
+  EXPECT_NEAR(constant("2 A -> C", 5.0), 5.0 / nv, 1e-12);
 }
 
-TEST(CompartmentGrid, NeighboursAreFaceAdjacentAndStopAtWalls) {
-  CompartmentGrid g;
-  g.shape = {4, 3, 2};
-  std::array<Index, 6> out{};
+// The grid's subvolume graph: one subvolume of h^3 per compartment, an edge per face
+// neighbour (none through the walls) with l^2 = h^2, in face order; a consistent graph.
+TEST(CompartmentGrid, GraphHasAnEdgePerFaceNeighbourInFaceOrder) {
+  const CompartmentGrid g{100.0, {4, 3, 2}};
+  const SubvolumeGraph graph = gridGraph(g);
+  ASSERT_EQ(graph.count(), g.count());
+  EXPECT_NO_THROW(validate(graph, "grid"));
+  std::vector<std::array<double, 6>> faces(g.count());
+  for (Index c = 0; c < g.count(); ++c)
+    for (int f = 0; f < 6; ++f) faces[c][f] = 10.0 * c + f;
+  const std::vector<double> per_edge = gridEdgeValues(g, faces);
+  ASSERT_EQ(per_edge.size(), graph.target.size());
   for (Index c = 0; c < g.count(); ++c) {
-    const int n = g.neighbours(c, out);
+    EXPECT_EQ(graph.size[c], 1e6);
     const auto [i, j, k] = g.coords(c);
     const int expected = (i > 0) + (i < 3) + (j > 0) + (j < 2) + (k > 0) + (k < 1);
-    ASSERT_EQ(n, expected) << "compartment " << c;
-    for (int m = 0; m < n; ++m) {
-      const auto [a, b, d] = g.coords(out[m]);
+    ASSERT_EQ(graph.start[c + 1] - graph.start[c], expected) << "compartment " << c;
+    int last_face = -1;
+    for (Index e = graph.start[c]; e < graph.start[c + 1]; ++e) {
+      EXPECT_EQ(graph.hop_length2[e], 1e4);
+      const auto [a, b, d] = g.coords(graph.target[e]);
       EXPECT_EQ(std::abs(a - i) + std::abs(b - j) + std::abs(d - k), 1);
+      // The face this edge crosses, from the value carried over for it.
+      const int face = static_cast<int>(per_edge[e] - 10.0 * c);
+      const int axis = face / 2, step = face % 2 ? 1 : -1;
+      const std::array<int, 3> from{i, j, k}, to{a, b, d};
+      EXPECT_EQ(to[axis] - from[axis], step);
+      EXPECT_GT(face, last_face);
+      last_face = face;
     }
   }
-  EXPECT_EQ(g.neighbours(g.index(0, 0, 0), out), 3);
-  EXPECT_EQ(g.neighbours(g.index(1, 1, 0), out), 5);
 }
 
 TEST(CompartmentGrid, LocateFindsTheHoldingCompartmentAndClamps) {

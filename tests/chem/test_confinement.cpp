@@ -19,17 +19,22 @@ namespace {
 constexpr double kH = 100.0;  // nm
 constexpr double kD = 1.0e4;  // nm^2/s: one hop per copy, full face and second
 
+const CompartmentGrid kGrid{kH, {4, 4, 4}};
+
 ChemistryModel sphereGrid() {
   ChemistryModel m;
-  m.grid.size = kH;
-  m.grid.shape = {4, 4, 4};
+  m.volumes = gridGraph(kGrid);
   m.species.push_back({"A", kD});
   return m;
 }
 
-CompartmentSlices sliceSphere(const CompartmentGrid& grid, const Vec3& centre, double radius) {
+CompartmentSlices sliceSphere(const Vec3& centre, double radius) {
   const TriangleSoup s = icosphere(centre, radius, 3);
-  return sliceCompartments(s.positions, s.triangles, grid);
+  return sliceCompartments(s.positions, s.triangles, kGrid);
+}
+
+void confine(ChemistryEngine& engine, const CompartmentSlices& s) {
+  engine.setConfinement(0, s.volume, gridEdgeValues(kGrid, s.faces));
 }
 
 void expectNoneInactive(const ChemistryEngine& e, const CompartmentSlices& s, Index species) {
@@ -44,12 +49,12 @@ class Confinement : public ::testing::TestWithParam<EngineKind> {};
 // Pooled over independent samples the counts are multinomial with p_c ∝ f_c.
 TEST_P(Confinement, StationaryDistributionIsUniformInVolume) {
   const ChemistryModel m = sphereGrid();
-  const CompartmentSlices s = sliceSphere(m.grid, Vec3(200.0, 200.0, 200.0), 170.0);
-  const Index C = m.grid.count();
+  const CompartmentSlices s = sliceSphere(Vec3(200.0, 200.0, 200.0), 170.0);
+  const Index C = kGrid.count();
   std::vector<int> copies(C, 0);
-  copies[m.grid.index(1, 1, 1)] = 150;
+  copies[kGrid.index(1, 1, 1)] = 150;
   auto engine = makeChemistryEngine(GetParam(), m, copies, 21);
-  engine->setConfinement(0, s.volume, s.faces);
+  confine(*engine, s);
   const int samples = GetParam() == EngineKind::kDirect ? 150 : 400;
   std::vector<double> counts(C, 0.0);
   engine->advance(20.0);
@@ -88,15 +93,15 @@ TEST_P(Confinement, StationaryDistributionIsUniformInVolume) {
 // copy is ever in an inactive compartment.
 TEST_P(Confinement, MovingMembraneNeverLosesOrStrandsCopies) {
   const ChemistryModel m = sphereGrid();
-  const Index C = m.grid.count();
+  const Index C = kGrid.count();
   std::vector<int> copies(C, 0);
-  copies[m.grid.index(1, 2, 1)] = 300;
+  copies[kGrid.index(1, 2, 1)] = 300;
   auto engine = makeChemistryEngine(GetParam(), m, copies, 22);
   const std::vector<std::pair<Vec3, double>> shapes{
       {Vec3(200.0, 200.0, 200.0), 190.0}, {Vec3(180.0, 210.0, 200.0), 120.0}, {Vec3(260.0, 250.0, 230.0), 90.0}};
   for (const auto& [centre, radius] : shapes) {
-    const CompartmentSlices s = sliceSphere(m.grid, centre, radius);
-    engine->setConfinement(0, s.volume, s.faces);
+    const CompartmentSlices s = sliceSphere(centre, radius);
+    confine(*engine, s);
     expectNoneInactive(*engine, s, 0);
     EXPECT_EQ(chemtest::total(*engine, C, 0), 300);
     for (int k = 0; k < 20; ++k) {
@@ -112,19 +117,19 @@ TEST_P(Confinement, MovingMembraneNeverLosesOrStrandsCopies) {
 // copy number halves; the bimolecular 2 A -> is unchanged in concentration terms.
 TEST_P(Confinement, ZeroOrderPropensityScalesWithVolume) {
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"A ->", 1.0}});
-  m.reactions[0].rate = 40.0 / m.grid.copiesPerMicromolar();
+  m.reactions[0].rate = 40.0 / copiesPerMicromolar(m.volumes.size[0]);
   auto engine = makeChemistryEngine(GetParam(), m, {0}, 23);
-  engine->setConfinement(0, {0.5}, {{0.5, 0.5, 0.5, 0.5, 1.0, 0.0}});
+  engine->setConfinement(0, {0.5}, {});  // one compartment: no edges
   engine->advance(10.0);
   const std::vector<int> n = chemtest::sample(*engine, 5.0, 4000, [](const auto& e) { return e.copies(0, 0); });
   const chemtest::Moments mo = chemtest::moments(n);
   EXPECT_NEAR(mo.mean, 20.0, 5.0 * mo.standardError);
   // Copies with nowhere to go are refused, not lost.
-  EXPECT_THROW(engine->setConfinement(0, {0.0}, {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}), std::runtime_error);
+  EXPECT_THROW(engine->setConfinement(0, {0.0}, {}), std::runtime_error);
   // Empty and inactive: nothing is born, and setting copies there is refused.
-  engine->setConfinement(0, {1.0}, {{1.0, 1.0, 1.0, 1.0, 1.0, 1.0}});
+  engine->setConfinement(0, {1.0}, {});
   engine->setCopies(0, 0, 0);
-  engine->setConfinement(0, {0.0}, {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}});
+  engine->setConfinement(0, {0.0}, {});
   engine->advance(engine->time() + 10.0);
   EXPECT_EQ(engine->copies(0, 0), 0);
   EXPECT_THROW(engine->setCopies(0, 0, 1), std::invalid_argument);

@@ -13,10 +13,11 @@ namespace {
 constexpr double kH = 100.0;  // nm, compartment edge
 constexpr double kD = 1.0e4;  // nm^2/s: one hop per copy, face and second
 
+CompartmentGrid cube(int n) { return {kH, {n, n, n}}; }
+
 ChemistryModel diffusionGrid(int n) {
   ChemistryModel m;
-  m.grid.size = kH;
-  m.grid.shape = {n, n, n};
+  m.volumes = gridGraph(cube(n));
   m.species.push_back({"A", kD});
   return m;
 }
@@ -38,17 +39,18 @@ class PointRelease : public ::testing::TestWithParam<Release> {};
 TEST_P(PointRelease, SpreadsWithMeanSquaredDisplacementSixDt) {
   const Release& r = GetParam();
   const ChemistryModel m = diffusionGrid(r.n);
+  const CompartmentGrid grid = cube(r.n);
   const int mid = r.n / 2;
-  std::vector<int> copies(m.grid.count(), 0);
-  copies[m.grid.index(mid, mid, mid)] = r.copies;
+  std::vector<int> copies(grid.count(), 0);
+  copies[grid.index(mid, mid, mid)] = r.copies;
   auto engine = makeChemistryEngine(r.kind, m, copies, 21);
 
   for (double t : r.times) {
     engine->advance(t);
     std::vector<double> r2;
     std::array<std::vector<double>, 3> x;
-    for (Index c = 0; c < m.grid.count(); ++c) {
-      const auto ijk = m.grid.coords(c);
+    for (Index c = 0; c < grid.count(); ++c) {
+      const auto ijk = grid.coords(c);
       double d2 = 0.0;
       std::array<double, 3> d{};
       for (int a = 0; a < 3; ++a) {
@@ -86,18 +88,18 @@ class UniformLimit : public ::testing::TestWithParam<EngineKind> {};
 TEST_P(UniformLimit, CopiesSpreadUniformlyOverCompartments) {
   const ChemistryModel m = diffusionGrid(5);
   const int copies = 1250, snapshots = 8;
-  std::vector<int> initial(m.grid.count(), 0);
+  std::vector<int> initial(m.volumes.count(), 0);
   initial[0] = copies;
   auto engine = makeChemistryEngine(GetParam(), m, initial, 22);
   engine->advance(60.0);
-  const double expected = static_cast<double>(copies) / m.grid.count();
+  const double expected = static_cast<double>(copies) / m.volumes.count();
   double chi2 = 0.0;
   for (int s = 0; s < snapshots; ++s) {
     engine->advance(engine->time() + 12.0);
-    ASSERT_EQ(chemtest::total(*engine, m.grid.count(), 0), copies);
-    for (Index c = 0; c < m.grid.count(); ++c) chi2 += std::pow(engine->copies(c, 0) - expected, 2) / expected;
+    ASSERT_EQ(chemtest::total(*engine, m.volumes.count(), 0), copies);
+    for (Index c = 0; c < m.volumes.count(); ++c) chi2 += std::pow(engine->copies(c, 0) - expected, 2) / expected;
   }
-  const int dof = snapshots * (m.grid.count() - 1);
+  const int dof = snapshots * (m.volumes.count() - 1);
   EXPECT_GT(chemtest::chiSquarePValue(chi2, dof), 1e-4) << "chi2 " << chi2 << " dof " << dof;
   EXPECT_EQ(engine->diffusionEvents(), engine->events());
 }

@@ -17,12 +17,12 @@ struct Observed {
 };
 
 Observed run(EngineKind kind, const ChemistryModel& m, std::uint64_t seed) {
-  auto engine = makeChemistryEngine(kind, m, std::vector<int>(m.grid.count() * m.species.size(), 0), seed);
+  auto engine = makeChemistryEngine(kind, m, std::vector<int>(m.volumes.count() * m.species.size(), 0), seed);
   engine->advance(20.0);
   Observed o;
   for (int i = 0; i < 3000; ++i) {
     engine->advance(engine->time() + 4.0);
-    o.total0.push_back(chemtest::total(*engine, m.grid.count(), 0));
+    o.total0.push_back(chemtest::total(*engine, m.volumes.count(), 0));
     o.local1.push_back(engine->copies(0, 1));
     o.local2.push_back(engine->copies(1, 2));
   }

@@ -17,8 +17,8 @@ class Controls : public ::testing::TestWithParam<EngineKind> {};
 // -> A at 100 copies/s and A -> at 1/s in two compartments without diffusion.
 ChemistryModel twoBirthDeathCompartments() {
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"A ->", 1.0}});
-  m.grid.shape = {2, 1, 1};
-  m.reactions[0].rate = 100.0 / m.grid.copiesPerMicromolar();
+  m.volumes = gridGraph(CompartmentGrid{500.0, {2, 1, 1}});
+  m.reactions[0].rate = 100.0 / copiesPerMicromolar(m.volumes.size[0]);
   return m;
 }
 
@@ -27,13 +27,14 @@ ChemistryModel twoBirthDeathCompartments() {
 TEST_P(Controls, RateFactorsScaleOneReactionInOneCompartment) {
   const ChemistryModel m = twoBirthDeathCompartments();
   auto engine = makeChemistryEngine(GetParam(), m, {0, 0}, 41);
-  engine->setRateFactor(0, 1, 0.0);
+  const RateFactors factors = engine->claimRateFactors(m.ranges.front());
+  factors.set(0, 1, 0.0);
   engine->advance(100.0);
   EXPECT_EQ(engine->copies(1, 0), 0);
   const double births = static_cast<double>(engine->reactionEvents()[0]);
   EXPECT_NEAR(births, 100.0 * 100.0, 5.0 * std::sqrt(100.0 * 100.0));
 
-  engine->setRateFactor(0, 1, 2.0);
+  factors.set(0, 1, 2.0);
   engine->advance(200.0);
   const double more = static_cast<double>(engine->reactionEvents()[0]) - births;
   EXPECT_NEAR(more, 300.0 * 100.0, 5.0 * std::sqrt(300.0 * 100.0));
@@ -46,8 +47,8 @@ TEST_P(Controls, RateFactorsScaleOneReactionInOneCompartment) {
 // species keeps its total.
 TEST_P(Controls, SetCopiesBetweenAdvancesIsExact) {
   ChemistryModel m = chemtest::wellMixed({"A", "B"}, {{"A ->", 1.0}});
-  m.grid.shape = {3, 1, 1};
-  m.species[1].diffusion = m.grid.size * m.grid.size;
+  m.volumes = gridGraph(CompartmentGrid{500.0, {3, 1, 1}});
+  m.species[1].diffusion = 500.0 * 500.0;
   auto engine = makeChemistryEngine(GetParam(), m, std::vector<int>(6, 0), 42);
   engine->advance(1.0);
   EXPECT_EQ(engine->events(), 0);
@@ -75,7 +76,7 @@ ChemistryModel mixedModel() {
 }
 
 void expectSameState(const ChemistryEngine& a, const ChemistryEngine& b, const ChemistryModel& m) {
-  for (Index c = 0; c < m.grid.count(); ++c)
+  for (Index c = 0; c < m.volumes.count(); ++c)
     for (Index s = 0; s < static_cast<Index>(m.species.size()); ++s)
       ASSERT_EQ(a.copies(c, s), b.copies(c, s)) << "compartment " << c << " species " << s;
   EXPECT_EQ(a.events(), b.events());
@@ -88,7 +89,7 @@ void expectSameState(const ChemistryEngine& a, const ChemistryEngine& b, const C
 
 TEST_P(Controls, SameSeedGivesIdenticalRuns) {
   const ChemistryModel m = mixedModel();
-  const std::vector<int> initial(m.grid.count() * m.species.size(), 3);
+  const std::vector<int> initial(m.volumes.count() * m.species.size(), 3);
   auto a = makeChemistryEngine(GetParam(), m, initial, 43);
   auto b = makeChemistryEngine(GetParam(), m, initial, 43);
   auto other = makeChemistryEngine(GetParam(), m, initial, 44);
@@ -102,21 +103,20 @@ TEST_P(Controls, SameSeedGivesIdenticalRuns) {
   EXPECT_NE(a->events(), other->events());
 }
 
-// A checkpoint stores copies, rate factors, time, counters and the random stream;
-// an engine rebuilt from them continues bit for bit like the original.
+// A checkpoint stores copies, time, counters and the random stream (the rate factors are
+// recomputed by their owners); an engine rebuilt from them continues bit for bit.
 TEST_P(Controls, RestoredEngineContinuesIdentically) {
   const ChemistryModel m = mixedModel();
-  const std::vector<int> initial(m.grid.count() * m.species.size(), 5);
+  const std::vector<int> initial(m.volumes.count() * m.species.size(), 5);
   auto original = makeChemistryEngine(GetParam(), m, initial, 45);
-  original->setRateFactor(3, 2, 0.25);
+  original->claimRateFactors(m.ranges.front()).set(3, 2, 0.25);
   original->advance(1.5);
 
-  auto resumed = makeChemistryEngine(GetParam(), m, std::vector<int>(initial.size(), 0), 99);
-  resumed->restore(original->random(), original->time(), original->events(), original->reactionEvents(),
-                   original->diffusionEvents());
-  for (Index c = 0; c < m.grid.count(); ++c)
-    for (Index s = 0; s < static_cast<Index>(m.species.size()); ++s) resumed->setCopies(c, s, original->copies(c, s));
-  resumed->setRateFactor(3, 2, 0.25);
+  // As a resumed run does: the same seed (from its config), the stored state, and the
+  // factors set again by their owner.
+  auto resumed = makeChemistryEngine(GetParam(), m, std::vector<int>(initial.size(), 0), 45);
+  resumed->restore(original->state());
+  resumed->claimRateFactors(m.ranges.front()).set(3, 2, 0.25);
 
   original->advance(4.0);
   resumed->advance(4.0);
@@ -126,7 +126,7 @@ TEST_P(Controls, RestoredEngineContinuesIdentically) {
 
 TEST_P(Controls, CountersAddUpAndTimeReachesTheEnd) {
   const ChemistryModel m = mixedModel();
-  auto engine = makeChemistryEngine(GetParam(), m, std::vector<int>(m.grid.count() * m.species.size(), 2), 46);
+  auto engine = makeChemistryEngine(GetParam(), m, std::vector<int>(m.volumes.count() * m.species.size(), 2), 46);
   engine->advance(2.5);
   EXPECT_EQ(engine->time(), 2.5);
   std::int64_t sum = engine->diffusionEvents();
@@ -146,9 +146,13 @@ TEST_P(Controls, RefusesBadArguments) {
   EXPECT_THROW(engine->setCopies(2, 0, 1), std::out_of_range);
   EXPECT_THROW(engine->setCopies(0, 1, 1), std::out_of_range);
   EXPECT_THROW(engine->setCopies(0, 0, -1), std::invalid_argument);
-  EXPECT_THROW(engine->setRateFactor(2, 0, 1.0), std::out_of_range);
-  EXPECT_THROW(engine->setRateFactor(0, 0, -1.0), std::invalid_argument);
-  EXPECT_THROW(engine->setRateFactor(0, 0, std::nan("")), std::invalid_argument);
+  const RateFactors factors = engine->claimRateFactors(m.ranges.front());
+  EXPECT_THROW(factors.set(2, 0, 1.0), std::out_of_range);
+  EXPECT_THROW(factors.set(0, 2, 1.0), std::out_of_range);
+  EXPECT_THROW(factors.set(0, 0, -1.0), std::invalid_argument);
+  EXPECT_THROW(factors.set(0, 0, std::nan("")), std::invalid_argument);
+  // One owner per range.
+  EXPECT_THROW(engine->claimRateFactors(m.ranges.front()), std::logic_error);
   EXPECT_THROW(engine->copies(0, 3), std::out_of_range);
   ChemistryModel bad = m;
   bad.species[0].diffusion = -1.0;

@@ -33,7 +33,7 @@ double binomial(int trials, double p, int n) {
 TEST_P(Stationary, BirthDeathIsPoisson) {
   const double mean = 20.0, k2 = 1.0;
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"A ->", k2}});
-  m.reactions[0].rate = mean * k2 / m.grid.copiesPerMicromolar();
+  m.reactions[0].rate = mean * k2 / copiesPerMicromolar(m.volumes.size[0]);
   auto engine = makeChemistryEngine(GetParam(), m, {0}, 11);
   engine->advance(10.0);
   const std::vector<int> n = chemtest::sample(*engine, 5.0 / k2, 20000, [](const auto& e) { return e.copies(0, 0); });
@@ -71,7 +71,7 @@ TEST_P(Stationary, BindingMatchesClosedForm) {
   const int a0 = 30, b0 = 20;
   const double c1 = 0.05, c2 = 1.0, k = c1 / c2;
   ChemistryModel m = chemtest::wellMixed({"A", "B", "C"}, {{"A + B -> C", 0.0}, {"C -> A + B", c2}});
-  m.reactions[0].rate = c1 * m.grid.copiesPerMicromolar();
+  m.reactions[0].rate = c1 * copiesPerMicromolar(m.volumes.size[0]);
   std::vector<double> p(b0 + 1);
   double norm = 0.0;
   for (int n = 0; n <= b0; ++n) {
@@ -121,7 +121,7 @@ std::vector<double> dimerDecayDistribution(double inflow, double c, int n_max) {
 TEST_P(Stationary, DimerDecayWithInflowMatchesMasterEquation) {
   const double inflow = 100.0, c = 0.1;  // copies/s; per pair and s
   ChemistryModel m = chemtest::wellMixed({"A"}, {{"-> A", 0.0}, {"2 A ->", 0.0}});
-  const double nv = m.grid.copiesPerMicromolar();
+  const double nv = copiesPerMicromolar(m.volumes.size[0]);
   m.reactions[0].rate = inflow / nv;
   m.reactions[1].rate = c * nv;
   const std::vector<double> p = dimerDecayDistribution(inflow, c, 200);

@@ -36,8 +36,7 @@ FilamentConfig walkingMotorOnInertActin(double walk_rate) {
 
 TEST(FilamentForceLaws, SlipCatchAndHillFollowTheirFormulas) {
   FilamentNetwork net({});
-  ChemistryModel model;
-  FilamentChemistry chem(net, model, filtest::kT);
+  FilamentChemistry chem(net, CompartmentGrid{}, {}, filtest::kT);
   LinkerType l;
   l.slip_length = 0.24;
   EXPECT_NEAR(chem.slipFactor(l, 10.0), std::exp(10.0 * 0.24 / filtest::kT), 1e-12);
@@ -120,8 +119,7 @@ TEST(FilamentMotor, StallsAtTheStallForce) {
   });
   for (int w = 1; w <= 400; ++w) {  // 20 s, far longer than the ~50 steps to stall
     rig.engine->advance(0.05 * w);
-    rig.network->layOut(0);  // as a run lays out before it relaxes
-    rig.chemistry->updateMechanochemistry(*rig.engine);
+    rig.relaxed();
   }
   const Binding& b = rig.network->motors().front();
   const double step_tension = m.stiffness * 2.0 * 5.4;  // both ends one step: at most this much
@@ -171,8 +169,7 @@ TEST(FilamentBranching, ConservesActinAndArp23) {
   long branched = 0;
   for (int w = 1; w <= 40; ++w) {
     rig.engine->advance(0.25 * w);
-    rig.network->layOut(0);
-    rig.chemistry->updateMechanochemistry(*rig.engine);
+    rig.relaxed();
     long polymer = 0;
     for (const Filament& f : rig.network->filaments()) polymer += f.monomers();
     ASSERT_EQ(polymer + rig.total(0), g0 + 5 * 300);

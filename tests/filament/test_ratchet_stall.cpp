@@ -8,8 +8,6 @@
 
 #include "core/constants.hpp"
 #include "filament/boundary_energy.hpp"
-#include "io/config.hpp"
-#include "io/system_builder.hpp"
 #include "sim/simulation.hpp"
 
 namespace cortex {
@@ -35,42 +33,38 @@ class LoadRecorder final : public RunObserver {
 
 TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstAWall) {
   // 1 µM of monomers in a 5 µm cube (75,277 copies: growth to stall takes ~50), so the
-  // pool is buffered; k_on c / k_off = 20.
-  const std::string toml = R"(
-[simulation]
-seed = 11
-end_time = 200.0
-chemistry_window = 0.02
-snapshot_interval = 200.0
-[mechanics]
-force_tolerance = 0.01
-[compartments]
-size = 5000.0
-shape = [1, 1, 1]
-[[species]]
-name = "G"
-diffusion = 0.0
-copies = 75277
-[[filament_type]]
-monomer_species = "G"
-plus_on = 11.6
-plus_off = 0.58
-[[filaments]]
-count = 1
-length = 405.0
-placement = "bundle"
-center = [702.5, 500.0, 500.0]
-direction = [1.0, 0.0, 0.0]
-fixed_minus_end = true
-[boundary]
-shape = "box"
-min = [0.0, 0.0, 0.0]
-max = [1000.0, 1000.0, 1000.0]
-repulsion = 56.0
-screening_length = 20.0
-)";
-  const Config config = parseConfig(toml, "ratchet.toml", ".", {});
-  auto system = buildSystem(config, nullptr);
+  // pool is buffered; k_on c / k_off = 20. One anchored filament grows along +x towards
+  // a soft wall at x = 1000 nm.
+  Config config;
+  config.source = "ratchet test";
+  config.simulation.seed = 11;
+  config.simulation.end_time = 200.0;
+  config.simulation.chemistry_window = 0.02;
+  config.simulation.snapshot_interval = 200.0;
+  config.mechanics.force_tolerance = 0.01;
+  ChemistryConfig chemistry;
+  chemistry.grid = {5000.0, {1, 1, 1}};
+  chemistry.species = {{"G", 0.0}};
+  chemistry.initial_copies = {75277};
+  chemistry.sides = {{}};
+  config.chemistry = chemistry;
+  FilamentType actin;
+  actin.monomer_species = "G";
+  actin.monomer_species_index = 0;
+  actin.plus_on = 11.6, actin.plus_off = 0.58, actin.minus_on = 1.3, actin.minus_off = 0.8;
+  FilamentInit bundle;
+  bundle.type = actin.name;
+  bundle.length = 405.0;
+  bundle.placement = FilamentInit::Placement::kBundle;
+  bundle.center = Vec3(702.5, 500.0, 500.0);
+  bundle.direction = Vec3::UnitX();
+  bundle.fixed_minus_end = true;
+  BoundaryConfig wall;
+  wall.max = Vec3(1000.0, 1000.0, 1000.0);
+  wall.repulsion = 56.0;
+  wall.screening_length = 20.0;
+  config.filaments = FilamentConfig{{actin}, {bundle}, {}, {}, {}, wall};
+  auto system = std::make_unique<System>(config);
   LoadRecorder recorder(20.0);  // stall is reached within ~5 s
   Simulation sim(*system, config.simulation, config.mechanics, recorder);
   sim.run(true);

@@ -18,11 +18,8 @@ constexpr double kKappa = 100.0;  // pN nm
 const double k8PiKappa = 8.0 * constants::kPi * kKappa;
 
 double bendingEnergy(const SurfaceMesh& mesh, CurvatureEstimator estimator) {
-  MembraneMechanics mech;
-  mech.bending_modulus = Schedule(kKappa);
-  mech.curvature = estimator;
-  Membrane membrane("sphere", mesh, mech, {});
-  BendingEnergy term(membrane);
+  Membrane membrane("sphere", mesh, {}, {});
+  BendingEnergy term(membrane, {Schedule(kKappa), Schedule(0.0), estimator});
   const std::vector<double> x = testing::flatPositions(mesh);
   return term.evaluate({x.data(), nullptr, 1});
 }

@@ -10,6 +10,7 @@
 #include "mesh/implicit_shapes.hpp"
 #include "mesh/marching_tetrahedra.hpp"
 #include "sim/system.hpp"
+#include "test_configs.hpp"
 #include "test_meshes.hpp"
 
 namespace cortex {
@@ -22,14 +23,8 @@ SurfaceMesh mtSphere(double R, double edge) {
 }
 
 std::unique_ptr<System> vesicle(const SurfaceMesh& mesh, double reduced_volume) {
-  MembraneMechanics m;
-  m.bending_modulus = Schedule(100.0);
-  m.area_modulus = Schedule(400.0);
-  m.volume_modulus = Schedule(0.8);
-  m.reduced_volume = Schedule(reduced_volume);
-  std::vector<std::unique_ptr<Membrane>> membranes;
-  membranes.push_back(std::make_unique<Membrane>("v", mesh, m, std::vector<char>{}));
-  return std::make_unique<System>(std::move(membranes));
+  return std::make_unique<System>(
+      testing::configWith({testing::membraneOf("v", mesh, testing::vesicleMechanics(reduced_volume))}));
 }
 
 class SphereMinimum : public ::testing::TestWithParam<MinimizerKind> {};
@@ -72,11 +67,11 @@ TEST(SpontaneousCurvature, SphereEnergyFollowsTheClosedForm) {
   const double R = 400.0, kappa = 50.0;
   const SurfaceMesh mesh = testing::sphereMesh(R, 5);
   for (double rh0 : {-1.0, 0.5, 1.0, 2.0}) {
-    MembraneMechanics m;
-    m.bending_modulus = Schedule(kappa);
-    m.spontaneous_curvature = Schedule(rh0 / R);
-    Membrane membrane("s", mesh, m, {});
-    BendingEnergy term(membrane);
+    BendingParameters p;
+    p.modulus = Schedule(kappa);
+    p.spontaneous_curvature = Schedule(rh0 / R);
+    Membrane membrane("s", mesh, {}, {});
+    BendingEnergy term(membrane, p);
     const std::vector<double> x = testing::flatPositions(mesh);
     const double exact = 8 * kPi * kappa * (1 - rh0) * (1 - rh0);
     // Absolute floor: at R H0 = 1 the exact energy is 0 and the discrete one is the

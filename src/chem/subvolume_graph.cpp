@@ -1,0 +1,35 @@
+#include "chem/subvolume_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace cortex {
+
+void validate(const SubvolumeGraph& g, const std::string& what) {
+  auto fail = [&](const std::string& why) { throw InputError(what + ": " + why); };
+  const Index n = g.count();
+  if (static_cast<Index>(g.start.size()) != n + 1 || g.start.front() != 0 || g.start.back() != g.numEdges() ||
+      g.hop_length2.size() != g.target.size())
+    fail("edge arrays do not match the subvolumes");
+  for (Index i = 0; i < n; ++i) {
+    if (!(g.size[i] > 0.0) || !std::isfinite(g.size[i])) fail("subvolume " + std::to_string(i) + " has no size");
+    if (g.start[i + 1] < g.start[i]) fail("edge offsets decrease");
+  }
+  for (Index i = 0; i < n; ++i)
+    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
+      const Index j = g.target[e];
+      if (j < 0 || j >= n || j == i) fail("edge " + std::to_string(e) + " leads nowhere");
+      if (!(g.hop_length2[e] > 0.0) || !std::isfinite(g.hop_length2[e]))
+        fail("edge " + std::to_string(e) + " has no hop length");
+      const auto back = std::find(g.target.begin() + g.start[j], g.target.begin() + g.start[j + 1], i);
+      if (back == g.target.begin() + g.start[j + 1]) fail("edge " + std::to_string(e) + " has no reverse");
+      const double forward = g.size[i] / g.hop_length2[e];
+      const double reverse = g.size[j] / g.hop_length2[back - g.target.begin()];
+      if (std::abs(forward - reverse) > 1e-9 * std::max(forward, reverse))
+        fail("edge " + std::to_string(e) + " breaks detailed balance (size / l^2 not symmetric)");
+    }
+}
+
+}  // namespace cortex

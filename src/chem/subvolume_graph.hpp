@@ -1,0 +1,33 @@
+// Where copies live and how they move: subvolumes (compartments of the 3D grid, or the
+// dual cells of a membrane's vertices) with a size each, joined by directed edges along
+// which a copy of a species with diffusion coefficient D hops at rate D / l^2, l^2 the
+// edge's squared hop length. On a cubic grid l = h; on a triangle mesh the cotangent
+// discretization gives l^2 = 2 |C_i| / (cot a + cot b) (thesis eq. 3.11 with no
+// potential). For detailed balance every edge i -> j has its reverse j -> i with
+// size_i / l^2_ij = size_j / l^2_ji (a symmetric conductance): then free diffusion is
+// stationary with copies proportional to size.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace cortex {
+
+struct SubvolumeGraph {
+  std::vector<double> size;         // per subvolume: nm^3 (volume) or nm^2 (surface)
+  std::vector<Index> start{0};      // edges of subvolume i: [start[i], start[i+1])
+  std::vector<Index> target;        // per directed edge: the subvolume it leads to
+  std::vector<double> hop_length2;  // per directed edge: l^2 (nm^2), hop rate D / l^2
+
+  Index count() const { return static_cast<Index>(size.size()); }
+  Index numEdges() const { return static_cast<Index>(target.size()); }
+};
+
+// Throws InputError (prefixed by `what`) unless the arrays are consistent: sizes finite
+// and > 0, edges to other existing subvolumes, squared lengths finite and > 0, every
+// edge with its reverse, and size / l^2 symmetric to 1e-9 relative.
+void validate(const SubvolumeGraph& graph, const std::string& what);
+
+}  // namespace cortex
