@@ -1,4 +1,4 @@
-// Events per second of the stochastic chemistry engines (issue 4, BENCHMARKS.md).
+// Events per second of the stochastic chemistry engines (issue 4, docs/benchmarks.md).
 //
 // (a) Diffusion only: one species, D = 1e6 nm^2/s, h = 100 nm (hop rate 100/s per face),
 //     8 copies in every compartment (10^6 copies on the 50^3 grid of the issue). The

@@ -1,6 +1,6 @@
 // Membrane force-field throughput on a ~10,000-vertex vesicle, and minimization cost.
 //
-// Scenario: MEDYAN's `vesicle` example parameters (/work/shared/BENCHMARKS.md): bending
+// Scenario: MEDYAN's `vesicle` example parameters (docs/benchmarks.md): bending
 // 100 pN·nm, area modulus 400 pN/nm, tension 0.02 pN/nm, volume modulus 0.8 pN/nm², on a
 // sphere of radius 1000 nm meshed two ways: icosphere level 5 (10,242 vertices, perfectly
 // regular) and marching tetrahedra + smoothing (what `shape = "sphere"` configs produce,

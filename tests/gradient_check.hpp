@@ -26,7 +26,9 @@ inline double gradientError(EnergyTerm& term, std::vector<double> x, double h, s
   term.evaluate({x.data(), g.data(), version++});
   for (std::size_t i = 0; i < g.size(); ++i) {
     g[i] -= g_before[i];
-    if (i < begin || i >= end) EXPECT_EQ(g[i], 0.0) << term.name() << " wrote coordinate " << i << ", not its own";
+    if (i < begin || i >= end) {
+      EXPECT_EQ(g[i], 0.0) << term.name() << " wrote coordinate " << i << ", not its own";
+    }
   }
   double diff2 = 0.0, norm2 = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Render the filaments of a cortex run with matplotlib 3D: first and last snapshot side by side.
 
-Reads OUTDIR/trajectory.h5 (layout: ../shared/ARCHITECTURE.md "Output", docs/output.md):
+Reads OUTDIR/trajectory.h5 (layout: docs/output.md):
   /snapshots/NNNNNN                       attrs: time (s)
   /snapshots/NNNNNN/filaments/beads          (k,3)   nm, all filaments' beads in order
   /snapshots/NNNNNN/filaments/offsets        (f+1)   filament i owns beads offsets[i]..offsets[i+1]-1

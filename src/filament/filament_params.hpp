@@ -1,6 +1,6 @@
 // Typed parameters of filaments and the proteins that act on them, as parsed and
 // validated by io/filament_config.cpp. Units: nm, s, pN, pN·nm; end rates 1/(µM·s) and
-// 1/s (ARCHITECTURE.md). Defaults are actin / α-actinin / non-muscle myosin IIA /
+// 1/s (docs/config.md). Defaults are actin / α-actinin / non-muscle myosin IIA /
 // Arp2/3 values from the MEDYAN papers (Popov, Komianos & Papoian 2016, Table S1-S3)
 // and the sources docs/filaments.md cites.
 #pragma once

@@ -1,4 +1,4 @@
-// summary.json: the final state's observables (contract in ARCHITECTURE.md).
+// summary.json: the final state's observables (contract in docs/output.md).
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Writes snapshots to OUTDIR/trajectory.h5 (layout in ARCHITECTURE.md, "Output") and keeps
+// Writes snapshots to OUTDIR/trajectory.h5 (layout in docs/output.md) and keeps
 // OUTDIR/trajectory.xdmf beside it up to date so ParaView can open the series at any time.
 #pragma once
 

@@ -402,7 +402,7 @@ TEST(RunFailure, KeepsLastGoodSnapshotAndCheckpoint) {
   EXPECT_DOUBLE_EQ(readJson(out / "summary.json")["time"].get<double>(), 0.3);
 }
 
-// ARCHITECTURE.md, Command line: "1 on a failure during the run (message says what and
+// README, exit codes: "1 on a failure during the run (message says what and
 // when)". The failing window here is t = 0.12 s; the message and cortex.log must say so
 // (io/run_driver.cpp logs "run failed at t = ... s (window k)").
 TEST(RunFailure, MessageSaysWhen) {
@@ -425,7 +425,7 @@ TEST(RunFailure, MessageSaysWhen) {
 // window with the default max_iterations = 100000, which also takes ~5 s per window) and
 // the program exits 0 with a summary of that state. max_iterations is lowered here only to
 // keep the test fast; the outcome is the same with the default.
-// Expected: exit 1 (a diverging energy, ARCHITECTURE.md Command line / core/error.hpp).
+// Expected: exit 1 (a diverging energy; README exit codes, core/error.hpp).
 TEST(RunFailure, UnboundedEnergyWithDefaultStepFails) {
   TempDir dir;
   std::string text = divergingConfig("max_iterations = 2000");

@@ -1,5 +1,4 @@
-// Membrane confinement in both engines (ChemistryEngine::setConfinement, VALIDATION.md
-// Chemistry): with hop rates D·a_ij/(h²·f_i) the stationary distribution of a confined
+// Membrane confinement in both engines (ChemistryEngine::setConfinement, docs/chemistry.md): with hop rates D·a_ij/(h²·f_i) the stationary distribution of a confined
 // diffusing species is uniform in the confined volume (copies per compartment ∝ f);
 // inactive compartments never hold a copy; copies stranded by a moving membrane are
 // moved, never lost; reaction propensities scale with the volume. Fixed seeds;

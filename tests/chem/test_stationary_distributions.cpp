@@ -1,4 +1,4 @@
-// Stationary distributions with closed forms (VALIDATION.md, Chemistry), run on both
+// Stationary distributions with closed forms (docs/chemistry.md), run on both
 // engines. Stochastic tests with fixed seeds.
 //
 // Occupancy is sampled at fixed times, an unbiased estimate of the time-averaged

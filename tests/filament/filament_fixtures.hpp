@@ -16,7 +16,7 @@ namespace cortex::filtest {
 
 inline constexpr double kT = constants::kBoltzmann * 298.15;
 
-// Actin with the MEDYAN end rates of BENCHMARKS.md, species 0 its monomer.
+// Actin with the MEDYAN end rates of docs/benchmarks.md, species 0 its monomer.
 inline FilamentType actin() {
   FilamentType t;
   t.monomer_species = "G";

@@ -30,7 +30,7 @@ double meanEdge(const SurfaceMesh& m) {
   return sum / m.numHalfedges();
 }
 
-// VALIDATION.md: the signed (star_perp) estimator over-estimates 8 pi kappa on projected
+// Surface Evolver's published star_perp figures (docs/membrane.md): the signed estimator over-estimates 8 pi kappa on projected
 // icospheres by 1.28e-2, 3.22e-3, 8.1e-4, 2.0e-4 at 162, 642, 2562, 10242 vertices. The
 // references carry 2-3 significant digits, hence the 3% relative tolerance.
 TEST(SphereBending, SignedEstimatorMatchesPublishedIcosphereErrors) {

@@ -57,7 +57,9 @@ TEST(MeshEdits, CollapseRemovesOneVertexTwoFacesAndThreeEdges) {
 TEST(MeshEdits, CollapseRefusesBoundaryTailsAndBrokenLinks) {
   SurfaceMesh m = testing::patchMesh(100.0, 20.0);
   for (Index h = 0; h < m.numHalfedges(); ++h)
-    if (m.isBoundaryVertex(m.tail(h))) EXPECT_FALSE(m.isCollapsible(h));
+    if (m.isBoundaryVertex(m.tail(h))) {
+      EXPECT_FALSE(m.isCollapsible(h));
+    }
   // A tetrahedron cannot lose a vertex and stay a closed surface.
   TriangleSoup tet{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
   SurfaceMesh t = SurfaceMesh::fromSoup(tet, "tet");
