@@ -85,8 +85,8 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
       edge_start_.push_back(static_cast<Index>(edge_target_.size()));
     }
   }
-  // Surface subvolumes by holder, in subvolume order.
-  std::vector<std::vector<Index>> held(region_start_[1]);
+  // Surface subvolumes by holder, in subvolume order (none held by a surface subvolume).
+  std::vector<std::vector<Index>> held(n);
   for (Index i = region_start_[1]; i < n; ++i) held[holder_[i]].push_back(i);
   held_ = Rows<Index>{};
   for (const auto& row : held) {

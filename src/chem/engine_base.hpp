@@ -100,7 +100,7 @@ class EngineBase : public ChemistryEngine {
   std::vector<Index> region_of_;     // per subvolume
   std::vector<double> size_;         // per subvolume: nm^3 or nm^2
   std::vector<Index> holder_;        // per subvolume: the 3D subvolume holding it (itself if 3D)
-  Rows<Index> held_;                 // per 3D subvolume: the surface subvolumes it holds
+  Rows<Index> held_;                 // per subvolume: the surface subvolumes it holds (3D ones only)
   std::vector<Index> edge_start_, edge_target_;
   std::vector<double> hop_length2_;
   std::vector<std::vector<Index>> diffusing_;  // per region: its species with D > 0, ascending

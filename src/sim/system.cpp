@@ -83,8 +83,12 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
     if (s.copies.size() != static_cast<std::size_t>(grid_.count()) * chemistry_model_.species.size() ||
         s.reaction_events.size() != chemistry_model_.reactions.size())
       throw InputError("checkpoint chemistry does not match the config (grid, species or reactions changed)");
-    chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, s.copies, seed);
-    chemistry_->restore(s);
+    try {
+      chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, s.copies, seed);
+      chemistry_->restore(s);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("checkpoint chemistry is damaged: {}", e.what()));
+    }
   } else {
     // Confined species start uniform in the volume on their side of the membrane.
     std::vector<std::vector<double>> weights(cc.sides.size());
