@@ -44,6 +44,7 @@ SubvolumeGraph gridGraph(const CompartmentGrid& grid) {
   const double h2 = grid.size * grid.size;
   g.size.assign(static_cast<std::size_t>(grid.count()), grid.volume());
   g.start.reserve(static_cast<std::size_t>(grid.count()) + 1);
+  g.lattice = grid.shape;
   forEachCompartment(grid, [&](int i, int j, int k) {
     forEachFace(grid, i, j, k, [&](int, Index neighbour) {
       g.target.push_back(neighbour);

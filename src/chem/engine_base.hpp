@@ -91,6 +91,8 @@ class EngineBase : public ChemistryEngine {
   // Total per-copy hop rate of species s out of subvolume i.
   double hopOutOf(Index i, Index s) const { return weighted(s) ? hopOut(i, s) : degree(i) * hop_rate_[s]; }
   Index degree(Index i) const { return edge_start_[i + 1] - edge_start_[i]; }
+  // The 3D subvolumes' lattice shape (SubvolumeGraph::lattice), zeros if none.
+  const std::array<int, 3>& lattice() const { return graphs_[0].lattice; }
 
   ReactionNetwork net_;
   std::vector<SpeciesDef> species_;

@@ -7,6 +7,26 @@ namespace cortex {
 
 namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// For each 6-bit mask of existing faces: which face is the k-th existing one.
+struct FaceTable {
+  std::array<std::array<std::uint8_t, 6>, 64> face{};
+};
+constexpr FaceTable makeFaceTable() {
+  FaceTable t;
+  for (int m = 0; m < 64; ++m) {
+    int count = 0;
+    for (int f = 0; f < 6; ++f)
+      if (m & (1 << f)) t.face[m][count++] = static_cast<std::uint8_t>(f);
+  }
+  return t;
+}
+constexpr FaceTable kFaceTable = makeFaceTable();
+}  // namespace
+
+Index NextSubvolumeEngine::neighbour(Index i, const Subvolume& v, Index k) const {
+  if (lattice_ && v.region == 0) return i + lattice_step_[kFaceTable.face[v.faces][k]];
+  return edge_target_[v.first_edge + k];
 }
 
 NextSubvolumeEngine::NextSubvolumeEngine(const ChemistryModel& model, const std::vector<int>& copies,
@@ -16,13 +36,24 @@ NextSubvolumeEngine::NextSubvolumeEngine(const ChemistryModel& model, const std:
 }
 
 void NextSubvolumeEngine::relaidOut() {
+  const auto [nx, ny, nz] = lattice();
+  lattice_ = nx > 0;
+  lattice_step_ = {-1, 1, -nx, nx, -nx * ny, nx * ny};
   rate_.assign(static_cast<std::size_t>(N_) * R_, 0.0);
   propensity_.assign(rate_.size(), 0.0);
   block_sum_.assign(static_cast<std::size_t>(N_) * blocks_, 0.0);
   sub_.assign(N_, Subvolume{});
   for (Index i = 0; i < N_; ++i) {
     sub_[i].first_edge = edge_start_[i];
-    sub_[i].degree = degree(i);
+    if (degree(i) > 0xffff || region_of_[i] > 0xff)
+      throw std::invalid_argument("chemistry engine: a subvolume with more than 65535 edges, or 255 surfaces");
+    sub_[i].degree = static_cast<std::uint16_t>(degree(i));
+    sub_[i].region = static_cast<std::uint8_t>(region_of_[i]);
+    if (lattice_ && region_of_[i] == 0) {
+      const int x = i % nx, y = i / nx % ny, z = i / (nx * ny);
+      const bool has[6] = {x > 0, x + 1 < nx, y > 0, y + 1 < ny, z > 0, z + 1 < nz};
+      for (int f = 0; f < 6; ++f) sub_[i].faces |= static_cast<std::uint8_t>(has[f] << f);
+    }
     const std::size_t base = static_cast<std::size_t>(i) * R_;
     for (Index r = 0; r < R_; ++r) rate_[base + r] = factor_[base + r] * constantAt(i, r);
     refresh(i);
@@ -46,7 +77,7 @@ void NextSubvolumeEngine::refresh(Index i) {
     v.reactions += sum;
   }
   double hops = 0.0;
-  for (Index s : diffusing_[region_of_[i]]) hops += hopOutOf(i, s) * n[s];
+  for (Index s : diffusing_[v.region]) hops += hopOutOf(i, s) * n[s];
   v.diffusion = hops;
 }
 
@@ -64,11 +95,14 @@ void NextSubvolumeEngine::changeCopies(Index i, Index s, int delta) {
   copies_[static_cast<std::size_t>(i) * S_ + s] += delta;
   sub_[i].diffusion += delta * hopOutOf(i, s);
   for (Index r : net_.dependents[s]) setPropensity(i, r);
-  const auto readers = net_.heldReaders[s];
-  if (readers.empty()) return;
+  if (!net_.heldReaders[s].empty()) updateHeldReaders(i, s);
+}
+
+// Out of line: most models have no surface reactions, and the event loop stays small.
+[[gnu::noinline]] void NextSubvolumeEngine::updateHeldReaders(Index i, Index s) {
   for (Index h : held_[i])
     changeSubvolume(h, [&] {
-      for (Index r : readers) setPropensity(h, r);
+      for (Index r : net_.heldReaders[s]) setPropensity(h, r);
     });
 }
 
@@ -206,7 +240,7 @@ bool NextSubvolumeEngine::hop(Index i, double x) {
   const int* n = &copies_[static_cast<std::size_t>(i) * S_];
   Index s = -1;
   double w = 0.0;
-  for (Index d : diffusing_[region_of_[i]]) {
+  for (Index d : diffusing_[v.region]) {
     w = hopOutOf(i, d) * n[d];
     if (x < w) {
       s = d;
@@ -217,7 +251,7 @@ bool NextSubvolumeEngine::hop(Index i, double x) {
   if (s < 0) return false;
   Index dest;
   if (!weighted(s)) {
-    dest = edge_target_[v.first_edge + std::min(static_cast<Index>(x / w * v.degree), v.degree - 1)];
+    dest = neighbour(i, v, std::min(static_cast<Index>(x / w * v.degree), static_cast<Index>(v.degree) - 1));
   } else {
     // Edges weighted by their rates; what is left of x picks one.
     double y = x / n[s];

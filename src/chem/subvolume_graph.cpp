@@ -30,6 +30,21 @@ void validate(const SubvolumeGraph& g, const std::string& what) {
       if (std::abs(forward - reverse) > 1e-9 * std::max(forward, reverse))
         fail("edge " + std::to_string(e) + " breaks detailed balance (size / l^2 not symmetric)");
     }
+  if (g.lattice == std::array<int, 3>{0, 0, 0}) return;
+  const auto [nx, ny, nz] = g.lattice;
+  if (nx < 1 || ny < 1 || nz < 1 || static_cast<double>(nx) * ny * nz != n) fail("lattice shape does not match");
+  Index i = 0;
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x, ++i) {
+        std::vector<Index> expected;
+        for (const auto& [has, step] : {std::pair{x > 0, -1}, {x + 1 < nx, 1}, {y > 0, -nx}, {y + 1 < ny, nx},
+                                        {z > 0, -nx * ny}, {z + 1 < nz, nx * ny}})
+          if (has) expected.push_back(i + step);
+        if (!std::equal(expected.begin(), expected.end(), g.target.begin() + g.start[i], g.target.begin() + g.start[i + 1]) ||
+            static_cast<Index>(expected.size()) != g.start[i + 1] - g.start[i])
+          fail("subvolume " + std::to_string(i) + " is not joined to its lattice neighbours in face order");
+      }
 }
 
 }  // namespace cortex

@@ -8,6 +8,7 @@
 // stationary with copies proportional to size.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct SubvolumeGraph {
   std::vector<Index> start{0};      // edges of subvolume i: [start[i], start[i+1])
   std::vector<Index> target;        // per directed edge: the subvolume it leads to
   std::vector<double> hop_length2;  // per directed edge: l^2 (nm^2), hop rate D / l^2
+  // Non-zero when the subvolumes are an nx x ny x nz lattice numbered x fastest whose
+  // edges lead to face neighbours in the order -x, +x, -y, +y, -z, +z (gridGraph): the
+  // engine then finds a hop's destination by arithmetic instead of a memory look-up.
+  std::array<int, 3> lattice{0, 0, 0};
 
   Index count() const { return static_cast<Index>(size.size()); }
   Index numEdges() const { return static_cast<Index>(target.size()); }
@@ -27,7 +32,8 @@ struct SubvolumeGraph {
 
 // Throws InputError (prefixed by `what`) unless the arrays are consistent: sizes finite
 // and > 0, edges to other existing subvolumes, squared lengths finite and > 0, every
-// edge with its reverse, and size / l^2 symmetric to 1e-9 relative.
+// edge with its reverse, size / l^2 symmetric to 1e-9 relative, and a lattice (if
+// declared) whose edges are its face neighbours in face order.
 void validate(const SubvolumeGraph& graph, const std::string& what);
 
 }  // namespace cortex

@@ -99,6 +99,7 @@ struct Coupled {
   std::vector<Index> holders;
 
   explicit Coupled(std::vector<double> areas, std::vector<Index> held_by) : holders(std::move(held_by)) {
+    model.volumes = SubvolumeGraph{};
     model.volumes.size = {0.8e9, 1.3e9};
     model.volumes.start = {0, 1, 2};
     model.volumes.target = {1, 0};
