@@ -1,5 +1,6 @@
-// The cortex command-line program: parses arguments and maps failures to exit codes
-// (0 success, 1 failure during the run, 2 bad input).
+// The cortex command-line program: parses arguments and maps outcomes to exit codes
+// (0 success, 1 failure during the run, 2 bad input, 3 stopped by a signal after a
+// checkpoint).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::Range(1, 1024));
   run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line on the terminal");
+  run_cmd->add_flag("--overwrite", run.overwrite, "Replace the results of an earlier run in the output folder");
 
   std::vector<std::string> check_overrides;
   CLI::App* check_cmd = app.add_subcommand("check", "Validate a config file without running it");
@@ -53,13 +55,16 @@ int main(int argc, char** argv) {
       return 2;
     }
     run.config = config;
-    cortex::runSimulation(run);
-    return 0;
+    return cortex::runSimulation(run) == cortex::RunOutcome::kStopped ? 3 : 0;
   } catch (const cortex::InputError& e) {
     std::cerr << "cortex: error: " << e.what() << '\n';
     return 2;
   } catch (const cortex::RunError& e) {
-    std::cerr << "cortex: run failed: " << e.what() << "\n(the last snapshot and checkpoint are kept)\n";
+    std::cerr << "cortex: run failed: " << e.what() << '\n';
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cortex: run failed: out of memory (the model is too large for this machine: fewer compartments, "
+                 "vertices or filaments)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "cortex: internal error: " << e.what() << '\n';

@@ -120,6 +120,19 @@ class ChemistryEngine {
   virtual void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
                           const std::vector<int>& copies) = 0;
 
+  // The total propensity (events/s) at the current copies and rates, and the channel
+  // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"").
+  struct Load {
+    double total = 0.0;
+    double largest = 0.0;
+    std::string largest_channel;
+  };
+  virtual Load load() const = 0;
+  // An advance that would fire more than `max` events (expected from the propensities at
+  // its start, or counted while it runs) stops with a RunError instead of running for
+  // hours: rates or diffusion constants far too large for the window. Default 1e9.
+  virtual void setEventLimit(double max) = 0;
+
   virtual std::int64_t events() const = 0;
   // Events fired per reaction (index as in the model); diffusion hops counted apart.
   virtual const std::vector<std::int64_t>& reactionEvents() const = 0;

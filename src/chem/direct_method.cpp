@@ -62,8 +62,11 @@ void DirectMethodEngine::setRateFactor(Index reaction, Index subvolume, double f
 void DirectMethodEngine::advance(double t_end) {
   if (t_end < time_) throw std::invalid_argument("chemistry engine: advance to a time before the current one");
   if (t_end == time_) return;
+  checkLoad(sum(), t_end - time_);
   double t = time_;
+  const std::int64_t start = events_;
   while (true) {
+    if (((events_ - start) & 0xFFFF) == 0) checkFired(events_ - start);
     const double total = sum();
     if (!(total > 0.0)) break;
     t += rng_.exponential(total);

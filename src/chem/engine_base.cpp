@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 
 namespace cortex {
@@ -25,6 +27,7 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       hop_rate_(S_, 0.0),
       confined_(S_, 0),
       scale_species_(R_, -1) {
+  for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
   graphs_[0] = model.volumes;
   const Index n0 = model.volumes.count();
   if (copies.size() != static_cast<std::size_t>(n0) * S_)
@@ -204,6 +207,45 @@ void EngineBase::setReactionHook(const ReactionRange& range, ReactionHook* hook)
   if (range.begin < 0 || range.end > R_ || range.end < range.begin)
     throw std::out_of_range("chemistry engine: reaction range of \"" + range.owner + "\" outside the model");
   for (Index r = range.begin; r < range.end; ++r) hooks_[r] = hook;
+}
+
+ChemistryEngine::Load EngineBase::load() const {
+  Load out;
+  auto note = [&](double value, const std::string& what) {
+    out.total += value;
+    if (!(value <= out.largest)) out.largest = value, out.largest_channel = what;
+  };
+  for (Index s = 0; s < S_; ++s) {
+    double hops = 0.0;
+    for (Index i = region_start_[net_.speciesRegion[s]]; i < region_start_[net_.speciesRegion[s] + 1]; ++i)
+      hops += (weighted(s) ? hopOut(i, s) : degree(i) * hop_rate_[s]) * copies_[static_cast<std::size_t>(i) * S_ + s];
+    note(hops, "diffusion of \"" + species_[s].name + "\"");
+  }
+  for (Index r = 0; r < R_; ++r) {
+    double sum = 0.0;
+    for (Index i = 0; i < N_; ++i)
+      sum += factor_[static_cast<std::size_t>(i) * R_ + r] * constantAt(i, r) * confinementScale(i, r) *
+             combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
+                          &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
+    note(sum, "reaction \"" + equations_[r] + "\"");
+  }
+  return out;
+}
+
+void EngineBase::checkLoad(double total, double dt) const {
+  const double expected = total * dt;
+  if (expected <= event_limit_) return;
+  const Load l = load();
+  throw RunError("chemistry: about " + fmt::format("{:.3g}", expected) + " events expected in a window of " +
+                   fmt::format("{:g}", dt) + " s, over the limit of " + fmt::format("{:g}", event_limit_) +
+                   " (chemistry.max_events_per_window); the largest channel is " + l.largest_channel + " at " +
+                   fmt::format("{:.3g}", l.largest) + " events/s: check its rate or diffusion constant");
+}
+
+void EngineBase::eventsOverflow(std::int64_t fired) const {
+  throw RunError(fmt::format("chemistry: {} events in one window, over the limit of {:g} "
+                             "(chemistry.max_events_per_window): a reaction network growing without bound?",
+                             fired, event_limit_));
 }
 
 ChemistryState EngineBase::state() const {

@@ -23,6 +23,8 @@ class EngineBase : public ChemistryEngine {
   RateFactors claimRateFactors(const ReactionRange& range) override;
   void setReactionHook(const ReactionRange& range, ReactionHook* hook) override;
   ChemistryState state() const override;
+  Load load() const override;
+  void setEventLimit(double max) override { event_limit_ = max; }
   void restore(const ChemistryState& state) override;
   // Stores the confinement, relocates stranded copies, then lets the engine recompute
   // the subvolumes whose rates changed (refreshSubvolume).
@@ -47,6 +49,15 @@ class EngineBase : public ChemistryEngine {
     if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(subvolume, species);
   }
   [[noreturn]] void growthOverflow(Index subvolume, Index species) const;
+  // Refuses an advance of `dt` at total propensity `total` (events/s) expected to exceed
+  // the event limit (RunError naming the largest channel); `fired` events so far in this
+  // advance are checked the same way.
+  void checkLoad(double total, double dt) const;
+  void checkFired(std::int64_t fired) const {
+    if (static_cast<double>(fired) > event_limit_) eventsOverflow(fired);
+  }
+  [[noreturn]] void eventsOverflow(std::int64_t fired) const;
+  double event_limit_ = 1e9;
 
   // Recomputes every propensity of subvolume i from copies_, the factors and the rates.
   virtual void refreshSubvolume(Index i) = 0;
@@ -96,6 +107,7 @@ class EngineBase : public ChemistryEngine {
 
   ReactionNetwork net_;
   std::vector<SpeciesDef> species_;
+  std::vector<std::string> equations_;  // per reaction, for messages
   Index S_, R_, N_ = 0;        // species, reactions, subvolumes (all regions)
   // The subvolumes of all regions as one graph (edges never cross regions).
   std::vector<Index> region_start_;  // per region, and one past the end

@@ -141,14 +141,21 @@ void NextSubvolumeEngine::advance(double t_end) {
   if (t_end == time_) return;
   // Nothing is pending between advances: every subvolume draws a fresh waiting time.
   first_times_.resize(N_);
+  double sum = 0.0;
   for (Index i = 0; i < N_; ++i) {
     refresh(i);
     const double a = total(sub_[i]);
+    sum += a;
     first_times_[i] = a > 0.0 ? time_ + rng_.exponential(a) : kNever;
   }
+  checkLoad(sum, t_end - time_);
   heap_.assign(first_times_);
   advancing_ = true;
-  while (heap_.topTime() <= t_end) fire(heap_.topId(), heap_.topTime());
+  const std::int64_t start = events_;
+  for (std::int64_t n = 0; heap_.topTime() <= t_end; ++n) {
+    fire(heap_.topId(), heap_.topTime());
+    if ((n & 0xFFFFF) == 0) checkFired(events_ - start);
+  }
   advancing_ = false;
   time_ = t_end;
 }

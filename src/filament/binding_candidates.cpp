@@ -6,45 +6,25 @@
 namespace cortex {
 namespace {
 
-// Counting sort of (compartment, candidate) by compartment, keeping their order within one.
-BindingCandidates byCompartment(const std::vector<std::pair<Index, BindingCandidate>>& items,
-                                const CompartmentGrid& grid) {
-  BindingCandidates out;
-  out.start.assign(grid.count() + 1, 0);
-  for (const auto& [comp, _] : items) ++out.start[comp + 1];
-  for (Index k = 0; k < grid.count(); ++k) out.start[k + 1] += out.start[k];
-  out.list.resize(items.size());
-  std::vector<Index> fill(out.start.begin(), out.start.end() - 1);
-  for (const auto& [comp, cand] : items) out.list[fill[comp]++] = cand;
-  return out;
+// 21 bits per axis of a cell index, offset so that negative coordinates stay ordered.
+std::uint64_t cellKey(const Vec3& x, double inverse_edge) {
+  auto axis = [&](double v) {
+    return static_cast<std::uint64_t>(std::floor(v * inverse_edge) + (1 << 20)) & 0x1FFFFF;
+  };
+  return axis(x.x()) << 42 | axis(x.y()) << 21 | axis(x.z());
 }
 
 }  // namespace
 
-// Site pairs on different filaments at a distance in [rmin, rmax], found through a cell
-// list of the sites (cells of edge rmax, sorted by cell key) and grouped by the
-// compartment of the pair's first site (where the bound protein's reactions will fire).
-// Only sites whose index is a multiple of `every` may bind.
-BindingCandidates findSitePairs(const FilamentNetwork& net, const CompartmentGrid& grid, BinderKind kind, Index type,
-                                double rmin, double rmax, int every) {
-  struct Site {
-    std::uint64_t cell;
-    Index filament;
-    std::int32_t site;
-    Index compartment;
-    Vec3 x;
-  };
-  const double inv = 1.0 / rmax;
-  auto cellOf = [&](const Vec3& x) {
-    // 21 bits per axis, offset so that negative coordinates stay ordered.
-    auto axis = [&](double v) { return static_cast<std::uint64_t>(std::floor(v * inv) + (1 << 20)) & 0x1FFFFF; };
-    return axis(x.x()) << 42 | axis(x.y()) << 21 | axis(x.z());
-  };
-  std::vector<Site> sites;
+BindingCandidates::BindingCandidates(const FilamentNetwork& net, const CompartmentGrid& grid, BinderKind kind,
+                                     Index type, double rmin, double rmax, int every)
+    : pairs_(rmax > 0.0), rmin2_(rmin * rmin), rmax2_(rmax * rmax) {
+  const double inverse_edge = pairs_ ? 1.0 / rmax : 0.0;
   const auto& fils = net.filaments();
   const double sp = net.spacing(kind, type);
   for (Index f = 0; f < static_cast<Index>(fils.size()); ++f) {
     const Filament& fil = fils[f];
+    if (kind == BinderKind::kBrancher && fil.type != net.config().branchers[type].filament_type_index) continue;
     for (Index c = 0; c < fil.numCylinders(); ++c) {
       const auto [first, last] = net.sitesOnCylinder(kind, type, f, c);
       const double lo = static_cast<double>(fil.lattice[c]), span = static_cast<double>(fil.lattice[c + 1]) - lo;
@@ -52,60 +32,87 @@ BindingCandidates findSitePairs(const FilamentNetwork& net, const CompartmentGri
         if (j % every != 0) continue;
         const double w = ((static_cast<double>(j) + 0.5) * sp - lo) / span;
         const Vec3 x = (1.0 - w) * fil.beads[c] + w * fil.beads[c + 1];
-        sites.push_back({cellOf(x), f, static_cast<std::int32_t>(j), grid.locate(x), x});
+        sites_.push_back({pairs_ ? cellKey(x, inverse_edge) : 0, f, static_cast<std::int32_t>(j), grid.locate(x), x});
       }
     }
   }
-  std::stable_sort(sites.begin(), sites.end(), [](const Site& a, const Site& b) { return a.cell < b.cell; });
-  // Occupied cells as ranges of the sorted sites; each unordered pair of neighbouring
-  // cells is visited once (the second cell's key not below the first's).
-  struct Cell {
-    std::uint64_t key;
-    std::size_t begin, end;
-  };
-  std::vector<Cell> cells;
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    if (cells.empty() || cells.back().key != sites[i].cell) cells.push_back({sites[i].cell, i, i});
-    cells.back().end = i + 1;
+  std::stable_sort(sites_.begin(), sites_.end(), [](const Site& a, const Site& b) { return a.cell < b.cell; });
+  for (std::size_t i = 0; i < sites_.size(); ++i) {
+    if (cells_.empty() || cells_.back().key != sites_[i].cell) cells_.push_back({sites_[i].cell, i, i});
+    cells_.back().end = i + 1;
   }
-  std::vector<std::pair<Index, BindingCandidate>> found;
-  const double rmin2 = rmin * rmin, rmax2 = rmax * rmax;
-  for (const Cell& a : cells) {
-    const std::uint64_t ci = a.key >> 42, cj = a.key >> 21 & 0x1FFFFF, ck = a.key & 0x1FFFFF;
-    for (std::uint64_t di = 0; di < 3; ++di)
-      for (std::uint64_t dj = 0; dj < 3; ++dj)
-        for (std::uint64_t dk = 0; dk < 3; ++dk) {
-          const std::uint64_t key = (ci + di - 1) << 42 | (cj + dj - 1) << 21 | (ck + dk - 1);
-          if (key < a.key) continue;
-          const auto b = std::lower_bound(cells.begin(), cells.end(), key,
-                                          [](const Cell& c, std::uint64_t k) { return c.key < k; });
-          if (b == cells.end() || b->key != key) continue;
-          for (std::size_t i = a.begin; i < a.end; ++i)
-            for (std::size_t j = b->key == a.key ? i + 1 : b->begin; j < b->end; ++j) {
-              const Site &p = sites[i], &q = sites[j];
-              if (p.filament == q.filament) continue;  // never on one filament
-              const double d2 = (q.x - p.x).squaredNorm();
-              if (d2 < rmin2 || d2 > rmax2) continue;
-              found.push_back({p.compartment, {{p.filament, q.filament}, {p.site, q.site}}});
-            }
+  // Sites grouped by compartment (counting sort, keeping site order), each with its
+  // partners' count accumulated within its compartment.
+  const Index C = grid.count();
+  start_.assign(static_cast<std::size_t>(C) + 1, 0);
+  for (const Site& s : sites_) ++start_[s.compartment + 1];
+  for (Index c = 0; c < C; ++c) start_[c + 1] += start_[c];
+  by_compartment_.resize(sites_.size());
+  std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < sites_.size(); ++i) by_compartment_[fill[sites_[i].compartment]++] = i;
+  cumulative_.resize(sites_.size());
+  for (Index c = 0; c < C; ++c) {
+    std::int64_t sum = 0;
+    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
+      std::int64_t partners = 0;
+      if (pairs_)
+        forEachPartner(by_compartment_[k], [&](std::size_t) { return ++partners, false; });
+      else
+        partners = 1;
+      cumulative_[k] = sum += partners;
+    }
+  }
+}
+
+template <class F>
+void BindingCandidates::forEachPartner(std::size_t i, F&& f) const {
+  const Site& p = sites_[i];
+  const std::uint64_t ci = p.cell >> 42, cj = p.cell >> 21 & 0x1FFFFF, ck = p.cell & 0x1FFFFF;
+  // The 27 cells around, those not before p's own (so each unordered pair is met once).
+  for (std::uint64_t di = 0; di < 3; ++di)
+    for (std::uint64_t dj = 0; dj < 3; ++dj)
+      for (std::uint64_t dk = 0; dk < 3; ++dk) {
+        const std::uint64_t key = (ci + di - 1) << 42 | (cj + dj - 1) << 21 | (ck + dk - 1);
+        if (key < p.cell) continue;
+        const auto b = std::lower_bound(cells_.begin(), cells_.end(), key,
+                                        [](const Cell& c, std::uint64_t k) { return c.key < k; });
+        if (b == cells_.end() || b->key != key) continue;
+        for (std::size_t j = key == p.cell ? i + 1 : b->begin; j < b->end; ++j) {
+          const Site& q = sites_[j];
+          if (p.filament == q.filament) continue;  // never on one filament
+          const double d2 = (q.x - p.x).squaredNorm();
+          if (d2 < rmin2_ || d2 > rmax2_) continue;
+          if (f(j)) return;
         }
-  }
-  return byCompartment(found, grid);
+      }
+}
+
+std::int64_t BindingCandidates::count(Index c) const {
+  if (start_.empty() || start_[c] == start_[c + 1]) return 0;
+  return cumulative_[start_[c + 1] - 1];
+}
+
+BindingCandidate BindingCandidates::pick(Index c, double u) const {
+  const std::int64_t n = count(c);
+  std::int64_t k = std::min<std::int64_t>(n - 1, static_cast<std::int64_t>(u * static_cast<double>(n)));
+  // The site holding the k-th pair: the first whose cumulative count exceeds k.
+  const auto first = cumulative_.begin() + static_cast<std::ptrdiff_t>(start_[c]);
+  const auto at = std::upper_bound(first, cumulative_.begin() + static_cast<std::ptrdiff_t>(start_[c + 1]), k);
+  if (at != first) k -= *(at - 1);
+  const std::size_t i = by_compartment_[static_cast<std::size_t>(at - cumulative_.begin())];
+  const Site& p = sites_[i];
+  if (!pairs_) return {{p.filament, p.filament}, {p.site, p.site}};
+  std::size_t partner = i;
+  forEachPartner(i, [&](std::size_t j) {
+    partner = j;
+    return k-- == 0;
+  });
+  const Site& q = sites_[partner];
+  return {{p.filament, q.filament}, {p.site, q.site}};
 }
 
 BindingCandidates findBranchSites(const FilamentNetwork& net, const CompartmentGrid& grid, Index brancher) {
-  std::vector<std::pair<Index, BindingCandidate>> sites;
-  const auto& fils = net.filaments();
-  for (Index f = 0; f < static_cast<Index>(fils.size()); ++f) {
-    if (fils[f].type != net.config().branchers[brancher].filament_type_index) continue;
-    for (Index cyl = 0; cyl < fils[f].numCylinders(); ++cyl) {
-      const auto [first, last] = net.sitesOnCylinder(BinderKind::kBrancher, brancher, f, cyl);
-      for (std::int64_t s = first; s <= last; ++s)
-        sites.push_back({grid.locate(net.sitePosition(BinderKind::kBrancher, brancher, f, s)),
-                         {{f, f}, {static_cast<std::int32_t>(s), static_cast<std::int32_t>(s)}}});
-    }
-  }
-  return byCompartment(sites, grid);
+  return BindingCandidates(net, grid, BinderKind::kBrancher, brancher, 0.0, 0.0, 1);
 }
 
 }  // namespace cortex

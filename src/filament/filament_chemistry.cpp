@@ -89,7 +89,7 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   pending_.assign(factor_.size(), 0.0);
   for (auto& side : ends_in_) side.assign(grid_.count(), {});
   is_dirty_.assign(factor_.size(), 0);
-  candidates_.assign(channels_.size(), BindingCandidates{std::vector<Index>(grid_.count() + 1, 0), {}});
+  candidates_.assign(channels_.size(), BindingCandidates{});
 }
 
 void FilamentChemistry::attach(ChemistryEngine& engine) {
@@ -171,12 +171,13 @@ void FilamentChemistry::findCandidates() {
     const Channel& c = channels_[ch];
     if (c.kind == FilamentReaction::kLinkerBind) {
       const LinkerType& l = cfg.linkers[c.type];
-      candidates_[ch] = findSitePairs(net_, grid_, BinderKind::kLinker, c.type, l.min_distance, l.max_distance, 1);
+      candidates_[ch] = BindingCandidates(net_, grid_, BinderKind::kLinker, c.type, l.min_distance, l.max_distance, 1);
     } else if (c.kind == FilamentReaction::kMotorBind) {
       const MotorType& m = cfg.motors[c.type];
       const int every = std::max(1, static_cast<int>(std::lround(static_cast<double>(m.site_spacing) /
                                                                  net_.spacing(BinderKind::kMotor, c.type))));
-      candidates_[ch] = findSitePairs(net_, grid_, BinderKind::kMotor, c.type, m.min_distance, m.max_distance, every);
+      candidates_[ch] =
+          BindingCandidates(net_, grid_, BinderKind::kMotor, c.type, m.min_distance, m.max_distance, every);
     } else if (c.kind == FilamentReaction::kBranch) {
       candidates_[ch] = findBranchSites(net_, grid_, c.type);
     }
@@ -256,7 +257,7 @@ void FilamentChemistry::rebuildFactors() {
     if (channels_[ch].kind == FilamentReaction::kNucleate)
       for (Index c = 0; c < C; ++c) pending_[ch * C + c] = 1.0;
     else if (isBinding(channels_[ch].kind))
-      for (Index c = 0; c < C; ++c) pending_[ch * C + c] = candidates_[ch].count(c);
+      for (Index c = 0; c < C; ++c) pending_[ch * C + c] = static_cast<double>(candidates_[ch].count(c));
   }
   dirty_.clear();
   for (std::size_t i = 0; i < pending_.size(); ++i) {

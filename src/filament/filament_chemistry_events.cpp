@@ -124,7 +124,7 @@ bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& rando
   const BinderKind kind = ch.kind == FilamentReaction::kMotorBind ? BinderKind::kMotor : BinderKind::kLinker;
   const BindingCandidates& cand = candidates_[&ch - channels_.data()];
   if (cand.count(c) == 0) return false;
-  const BindingCandidate& p = *cand.pick(c, random.uniform());
+  const BindingCandidate p = cand.pick(c, random.uniform());
   // The candidate list is from the last minimization: a site since lost or taken makes
   // this a void event (thinning).
   for (int e = 0; e < 2; ++e)
@@ -180,7 +180,7 @@ bool FilamentChemistry::fireWalk(const Channel& ch, Index c, RandomStream& rando
 bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& random) {
   const BindingCandidates& cand = candidates_[&ch - channels_.data()];
   if (cand.count(c) == 0) return false;
-  const BindingCandidate& site = *cand.pick(c, random.uniform());
+  const BindingCandidate site = cand.pick(c, random.uniform());
   const Index mother = site.filament[0];
   if (!net_.siteExists(BinderKind::kBrancher, ch.type, mother, site.site[0]) ||
       net_.occupied(BinderKind::kBrancher, ch.type, mother, site.site[0]))

@@ -5,6 +5,8 @@
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
+#include "io/atomic_file.hpp"
 #include "io/filament_checkpoint.hpp"
 #include "io/hdf5_file.hpp"
 
@@ -12,6 +14,26 @@ namespace cortex {
 namespace {
 
 constexpr const char* kFormat = "cortex checkpoint 2";
+// The user block, 512 bytes before the HDF5 image (HDF5 ignores them): "<format>\nfnv1a64
+// <16 hex digits of the hash of every later byte>\n", zero-padded.
+constexpr std::size_t kUserBlock = 512;
+
+std::string stampLine(std::string_view bytes) {
+  return fmt::format("{}\nfnv1a64 {:016x}\n", kFormat, fnv1a64(bytes.substr(kUserBlock)));
+}
+
+// The file's bytes, checked against their stamp.
+void verifyStamp(const std::filesystem::path& file) {
+  const std::string bytes = readWholeFile(file, std::size_t{1} << 40);
+  if (bytes.size() <= kUserBlock || bytes.compare(0, std::string(kFormat).size() + 1, std::string(kFormat) + "\n") != 0)
+    throw InputError(fmt::format("{}: not a cortex checkpoint of format \"{}\" (another program's file, or an "
+                                 "older cortex's)",
+                                 file.string(), kFormat));
+  const std::string stamp = stampLine(bytes);
+  if (bytes.compare(0, stamp.size(), stamp) != 0)
+    throw InputError(fmt::format("{}: damaged (its content no longer matches its checksum); it cannot be resumed",
+                                 file.string()));
+}
 
 // The state structs list their scalar fields once (fields()); these visitors store them
 // as attributes of one group and read them back, so the two directions cannot drift.
@@ -125,29 +147,33 @@ ChemistryState readChemistry(const h5::File& f) {
 }  // namespace
 
 void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const SystemState& state) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
+  std::string bytes;
   {
-    h5::File f = h5::File::create(tmp);
+    h5::File f = h5::File::createInMemory(file);
     f.createGroups("/run");
     f.setAttribute("/run", "format", std::string(kFormat));
     f.setAttribute("/run", "config", header.config_toml);
     f.setAttribute("/run", "config_source", header.config_source);
     f.setAttribute("/run", "base_dir", header.base_dir);
     f.setAttribute("/run", "next_snapshot", header.next_snapshot);
+    f.setAttribute("/run", "run_id", header.run_id);
     f.setAttribute("/run", "bodies", joinNames(state.bodies));
     SystemState::fields(state, AttributeWriter{f, "/run"});
     RunCounters::fields(state.counters, AttributeWriter{f, "/run"});
     for (const auto& [name, m] : state.membranes) writeMembrane(f, "/membranes/" + name, m);
     if (state.chemistry) writeChemistry(f, *state.chemistry);
     if (state.filaments) writeFilamentState(f, *state.filaments);
-    f.flush();
+    bytes = std::string(kUserBlock, '\0') + f.image();
   }
-  std::filesystem::rename(tmp, file);
+  const std::string stamp = stampLine(bytes);
+  bytes.replace(0, stamp.size(), stamp);
+  writeFileAtomically(file, bytes);
 }
 
 Checkpoint readCheckpoint(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file))
     throw InputError(fmt::format("{}: no checkpoint to resume from", file.string()));
+  verifyStamp(file);
   h5::File f = h5::File::openReadOnly(file);
   if (!f.exists("/run") || f.attributeString("/run", "format") != kFormat)
     throw InputError(fmt::format("{}: not a cortex checkpoint (or from an incompatible version)", file.string()));
@@ -156,6 +182,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
   cp.header.config_source = f.attributeString("/run", "config_source");
   cp.header.base_dir = f.attributeString("/run", "base_dir");
   cp.header.next_snapshot = f.attributeInt64("/run", "next_snapshot");
+  cp.header.run_id = f.attributeString("/run", "run_id");
   SystemState& s = cp.state;
   s.bodies = splitNames(f.attributeString("/run", "bodies"));
   SystemState::fields(s, AttributeReader{f, "/run"});

@@ -14,6 +14,7 @@ struct CheckpointHeader {
   std::string config_source; // original file name, for messages
   std::string base_dir;      // directory relative mesh paths resolve against
   std::int64_t next_snapshot = 0;
+  std::string run_id;        // names the run (its first config, seed and version); resumes keep it
 };
 
 struct Checkpoint {
@@ -21,10 +22,12 @@ struct Checkpoint {
   SystemState state;
 };
 
-// Writes atomically (a temporary file renamed over the old one), so a crash never
-// leaves a half-written checkpoint.
+// Built in memory and written atomically (writeFileAtomically), so neither a crash nor a
+// full disk leaves a half-written checkpoint; its first 512 bytes (an HDF5 user block)
+// hold the format and a checksum of the rest.
 void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& header, const SystemState& state);
-// Throws InputError if the file is missing or not a cortex checkpoint.
+// Throws InputError if the file is missing, not a cortex checkpoint of this format, or
+// damaged (checksum mismatch).
 Checkpoint readCheckpoint(const std::filesystem::path& file);
 
 }  // namespace cortex

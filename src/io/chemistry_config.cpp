@@ -54,9 +54,8 @@ struct SpeciesConfig {
 
 SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const std::vector<MembraneConfig>& membranes) {
   SpeciesConfig s;
-  s.def.name = r.string("name", "");
-  if (s.def.name.empty() || s.def.name.find_first_of(" \t/+>") != std::string::npos)
-    r.fail("name", "must be a non-empty name without spaces, '/', '+' or '>'");
+  if (!r.has("name")) r.fail("name", "is required");
+  s.def.name = r.name("name", "");
   s.def.diffusion = r.number("diffusion", 0.0, Range::nonNegative(), "nm^2/s");
   s.side = readSide(r, membranes);
   const bool by_copies = r.has("copies"), by_concentration = r.has("concentration");
@@ -101,6 +100,7 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
   if (auto e = root.table("chemistry")) {
     c.engine = e->choice("engine", "nsm", {"nsm", "direct"}) == "direct" ? EngineKind::kDirect
                                                                          : EngineKind::kNextSubvolume;
+    c.max_events_per_window = e->number("max_events_per_window", c.max_events_per_window, Range{1.0, 1e15}, "events");
     e->finish();
   }
   const double box = c.grid.volume() * c.grid.count();

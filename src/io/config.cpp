@@ -114,9 +114,7 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
 
 MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir) {
   MembraneConfig m;
-  m.name = r.string("name", fmt::format("membrane{}", index));
-  if (m.name.empty() || m.name.find_first_of("/ \t") != std::string::npos)
-    r.fail("name", "must be non-empty without spaces or '/' (it names an HDF5 group)");
+  m.name = r.name("name", fmt::format("membrane{}", index));
   readShape(r, m, base_dir);
   // Closedness of a loaded mesh is only known once it is read; sim/ checks it again.
   m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane");

@@ -23,6 +23,7 @@ toml::node_view<toml::node> parseValue(const std::string& text, toml::table& hol
   } catch (const toml::parse_error&) {
     holder = toml::table{{"v", text}};  // a bare word: take it as a string
   }
+  if (holder.size() != 1) holder = toml::table{{"v", text}};  // "1 # x = 2" and the like: not one value
   return holder["v"];
 }
 
@@ -33,6 +34,12 @@ void applyOverride(toml::table& root, const std::string& assignment) {
   const std::string where = fmt::format("--set {}", assignment);
   if (eq == std::string::npos || eq == 0)
     throw InputError(fmt::format("{}: expected key.path=value", where));
+  // A line break would end the TOML value and let the rest pass unread.
+  for (const char c : assignment)
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t')
+      throw InputError(fmt::format("--set: '{}...' holds a control character (line break, NUL...); give one "
+                                   "key=value on one line",
+                                   assignment.substr(0, assignment.find_first_of("\r\n"))));
   const std::vector<std::string> keys = split(assignment.substr(0, eq));
   toml::table holder;
   toml::node_view<toml::node> value = parseValue(assignment.substr(eq + 1), holder);

@@ -123,6 +123,33 @@ std::string ConfigReader::string(const std::string& key, const std::string& fall
   return *v;
 }
 
+namespace {
+// The text with anything but printable ASCII shown as \xNN (a NUL must not reach a message).
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f)
+      out += c;
+    else
+      out += fmt::format("\\x{:02x}", u);
+  }
+  return out;
+}
+}  // namespace
+
+std::string ConfigReader::name(const std::string& key, const std::string& fallback) const {
+  const std::string v = string(key, fallback);
+  const auto allowed = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  const bool ok = !v.empty() && v.size() <= 64 && (std::isalpha(static_cast<unsigned char>(v[0])) || v[0] == '_') &&
+                  std::all_of(v.begin(), v.end(), allowed);
+  if (!ok)
+    fail(key, fmt::format("must be 1-64 letters, digits, '_' or '-', starting with a letter or '_' (it names "
+                          "HDF5 groups and files), got \"{}\"",
+                          printable(v)));
+  return v;
+}
+
 std::string ConfigReader::choice(const std::string& key, const std::string& fallback,
                                  const std::vector<std::string>& allowed) const {
   const std::string v = string(key, fallback);

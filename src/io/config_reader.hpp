@@ -34,6 +34,9 @@ class ConfigReader {
   std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
   bool boolean(const std::string& key, bool fallback) const;
   std::string string(const std::string& key, const std::string& fallback) const;
+  // A name of a membrane, species, type...: it names HDF5 groups, files and XDMF blocks,
+  // so 1-64 letters, digits, '_' or '-', starting with a letter or '_'.
+  std::string name(const std::string& key, const std::string& fallback) const;
   std::string choice(const std::string& key, const std::string& fallback,
                      const std::vector<std::string>& allowed) const;
   std::vector<double> numbers(const std::string& key, std::size_t count, Range range, const char* unit) const;

@@ -17,11 +17,6 @@ Vec3 readVec(const ConfigReader& r, const std::string& key, const char* unit) {
   return Vec3(v[0], v[1], v[2]);
 }
 
-void checkName(const ConfigReader& r, const std::string& name) {
-  if (name.empty() || name.find_first_of(" \t/") != std::string::npos)
-    r.fail("name", fmt::format("must be a non-empty name without spaces or '/', got \"{}\"", name));
-}
-
 Index speciesIndex(const ConfigReader& r, const std::string& key, const std::vector<SpeciesDef>& species) {
   if (!r.has(key)) r.fail(key, "is required (the name of a [[species]])");
   const std::string name = r.string(key, "");
@@ -44,8 +39,7 @@ Index typeIndex(const ConfigReader& r, const std::string& key, const std::vector
 FilamentType readType(const ConfigReader& r, bool single, const std::vector<SpeciesDef>& species) {
   FilamentType t;
   if (!single && !r.has("name")) r.fail("name", "is required when there are several [[filament_type]]");
-  t.name = r.string("name", t.name);
-  checkName(r, t.name);
+  t.name = r.name("name", t.name);
   t.monomer_size = r.number("monomer_size", t.monomer_size, Range{1e-3, 1e6, false, false}, "nm");
   t.cylinder_monomers = static_cast<int>(r.integer("cylinder_monomers", t.cylinder_monomers, 1, 1'000'000));
   t.bending_stiffness = r.number("bending_stiffness", t.bending_stiffness, Range::nonNegative(), "pN·nm");
@@ -154,8 +148,7 @@ template <class Protein>
 void readIdentity(const ConfigReader& r, Protein& p, const std::vector<SpeciesDef>& species) {
   p.species_index = speciesIndex(r, "species", species);
   p.species = species[p.species_index].name;
-  p.name = r.string("name", p.species);
-  checkName(r, p.name);
+  p.name = r.name("name", p.species);
 }
 
 // Binding between two filaments, shared by linkers and motors.

@@ -83,11 +83,15 @@ hid_t openExisting(const std::filesystem::path& path, unsigned flags, const char
 
 }  // namespace
 
-File File::create(const std::filesystem::path& path) {
+File File::createInMemory(const std::filesystem::path& name) {
   silenceHdf5Errors();
-  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id < 0) throw RunError(fmt::format("cannot create HDF5 file '{}'", path.string()));
-  return File(id, path);
+  const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  // Grow the image 1 MiB at a time; never write a backing file.
+  if (H5Pset_fapl_core(fapl.get(), 1 << 20, 0) < 0)
+    throw RunError(fmt::format("cannot set up the in-memory HDF5 file '{}'", name.string()));
+  const hid_t id = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
+  if (id < 0) throw RunError(fmt::format("cannot create the in-memory HDF5 file '{}'", name.string()));
+  return File(id, name);
 }
 
 File File::openReadWrite(const std::filesystem::path& path) {
@@ -282,8 +286,23 @@ std::string File::attributeString(const std::string& objpath, const std::string&
   return value;
 }
 
+void File::linkExternal(const std::string& objpath, const std::string& file, const std::string& target) {
+  const Handle lcpl(intermediateGroupsLcpl(), H5Pclose);
+  if (H5Lcreate_external(file.c_str(), target.c_str(), id_, objpath.c_str(), lcpl.get(), H5P_DEFAULT) < 0)
+    fail("create external link", objpath);
+}
+
 void File::flush() {
   if (H5Fflush(id_, H5F_SCOPE_GLOBAL) < 0) fail("flush", "/");
+}
+
+std::string File::image() {
+  flush();
+  const ssize_t size = H5Fget_file_image(id_, nullptr, 0);
+  if (size < 0) fail("take the image of", "/");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (H5Fget_file_image(id_, bytes.data(), bytes.size()) != size) fail("take the image of", "/");
+  return bytes;
 }
 
 }  // namespace cortex::h5

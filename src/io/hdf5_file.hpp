@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string>
 #include <vector>
 
 namespace cortex::h5 {
@@ -16,7 +17,11 @@ using Shape = std::vector<hsize_t>;  // dataset dimensions, slowest-varying firs
 
 class File {
  public:
-  static File create(const std::filesystem::path& path);  // truncates an existing file
+  // A file built in memory (HDF5's core driver, no backing file): nothing touches the disk
+  // until its image() is written out, e.g. with writeFileAtomically, so a full disk or a
+  // crash can never leave it half-written. `name` is for messages. (Bytes prepended to
+  // the image form a user block: HDF5 finds its superblock after them.)
+  static File createInMemory(const std::filesystem::path& name);
   static File openReadWrite(const std::filesystem::path& path);
   static File openReadOnly(const std::filesystem::path& path);
 
@@ -58,7 +63,13 @@ class File {
   std::int64_t attributeInt64(const std::string& objpath, const std::string& name) const;
   std::string attributeString(const std::string& objpath, const std::string& name) const;
 
+  // An external link at `objpath` to object `target` of HDF5 file `file` (a path relative
+  // to this file's folder, where HDF5 looks for it when the link is followed).
+  void linkExternal(const std::string& objpath, const std::string& file, const std::string& target);
+
   void flush();
+  // The bytes of an in-memory file (flushed first).
+  std::string image();
 
  private:
   File(hid_t id, std::filesystem::path path) : id_(id), path_(std::move(path)) {}

@@ -1,6 +1,7 @@
 #include "io/run_driver.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <omp.h>
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -9,10 +10,15 @@
 
 #include <chrono>
 
+#include <regex>
+
 #include "core/error.hpp"
+#include "core/hash.hpp"
+#include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
 #include "io/run_observer.hpp"
+#include "io/stop_signals.hpp"
 #include "io/summary.hpp"
 #include "io/trajectory_writer.hpp"
 #include "sim/simulation.hpp"
@@ -30,6 +36,73 @@ void setUpLogging(const std::filesystem::path& outdir, bool append) {
   logger->set_level(spdlog::level::debug);
   logger->flush_on(spdlog::level::info);
   spdlog::set_default_logger(logger);
+}
+
+// What a run writes into its folder: a fresh run refuses a folder holding any of them
+// (unless --overwrite, which removes exactly these).
+const char* const kRunFiles[] = {"summary.json", "checkpoint.h5", "trajectory.h5", "trajectory.xdmf", "cortex.log",
+                                 "snapshots", "summary.json.tmp", "checkpoint.h5.tmp", "trajectory.h5.tmp",
+                                 "trajectory.xdmf.tmp"};
+
+void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(outdir, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_directory(status))
+    throw InputError(fmt::format("{}: the output folder is a file; give another -o", outdir.string()));
+  std::filesystem::create_directories(outdir, ec);
+  if (ec) throw InputError(fmt::format("{}: cannot create output folder: {}", outdir.string(), ec.message()));
+  if (::access(outdir.c_str(), W_OK | X_OK) != 0)
+    throw InputError(fmt::format("{}: cannot write into the output folder (permissions)", outdir.string()));
+  std::vector<std::string> found;
+  for (const char* name : kRunFiles)
+    if (std::filesystem::exists(outdir / name, ec)) found.push_back(name);
+  if (found.empty()) return;
+  if (!overwrite)
+    throw InputError(fmt::format("{}: holds the results of an earlier run ({}): give another -o, continue it with "
+                                 "--resume {}, or replace them with --overwrite",
+                                 outdir.string(), fmt::join(found, ", "), outdir.string()));
+  for (const std::string& name : found) {
+    std::filesystem::remove_all(outdir / name, ec);
+    if (ec) throw InputError(fmt::format("{}: cannot remove {}: {}", outdir.string(), name, ec.message()));
+  }
+}
+
+// Keys whose value the stored state was built from: a resume cannot honour a change, so
+// it refuses one (the rest — rates, moduli, schedules, end_time — may change).
+void refuseFrozenOverrides(const std::vector<std::string>& overrides) {
+  static const std::regex frozen(
+      R"(^(simulation\.(seed|chemistry_window)|compartments(\..*)?|chemistry\.engine|)"
+      R"(membrane\.[0-9]+\.(name|shape|mesher|center|radius|radii|size|file|mesh_size|boundary|min_size|max_size|remesh_tolerance)|)"
+      R"(species\.[0-9]+\.(name|copies|concentration|inside|outside)|reaction\.[0-9]+\.equation|)"
+      R"(filament_type\.[0-9]+\.(name|monomer_species|monomer_size|cylinder_monomers)|filaments(\..*)?|)"
+      R"((linker|motor|brancher)\.[0-9]+\.(name|species|site_spacing|step_size|filament_type))$)");
+  for (const std::string& o : overrides) {
+    const std::string key = o.substr(0, o.find('='));
+    if (std::regex_match(key, frozen))
+      throw InputError(fmt::format("--resume: --set {}: the stored state was built from this key (initial shape, "
+                                   "copies, lattice or random streams), so a resumed run cannot change it",
+                                   key));
+  }
+}
+
+// Rates or diffusion constants so large that one window would take hours: refused before
+// anything is written (the engine refuses the same at every window, with a RunError).
+void checkChemistryLoad(const System& system, const Config& config) {
+  if (!system.chemistry()) return;
+  const ChemistryEngine::Load load = system.chemistry()->load();
+  const double expected = load.total * config.simulation.chemistry_window;
+  const double limit = config.chemistry->max_events_per_window;
+  if (!(expected <= limit))
+    throw InputError(fmt::format("{}: the chemistry would fire about {:.3g} events per chemistry_window of {:g} s, "
+                                 "over the limit of {:g} (chemistry.max_events_per_window); its largest channel is "
+                                 "{} at {:.3g} events/s: check its rate or diffusion constant",
+                                 config.source, expected, config.simulation.chemistry_window, limit,
+                                 load.largest_channel, load.largest));
+}
+
+// The run's name: what makes it (its first effective config, seed, version).
+std::string runId(const std::string& effective_toml) {
+  return fmt::format("{:016x}", fnv1a64(std::string(CORTEX_VERSION) + "\n" + effective_toml));
 }
 
 // A resumed run continues the stored one: overrides may extend or change physics, but not
@@ -76,7 +149,7 @@ void logThroughput(const System& system, double wall) {
 
 }  // namespace
 
-void runSimulation(const RunRequest& request) {
+RunOutcome runSimulation(const RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   omp_set_num_threads(std::max(1, request.threads));
   const bool resume = !request.resume_dir.empty();
@@ -89,52 +162,79 @@ void runSimulation(const RunRequest& request) {
   CheckpointHeader header;
   if (resume) {
     outdir = request.resume_dir;
+    if (!request.output_dir.empty())
+      throw InputError("--resume continues in its own folder; -o cannot be combined with it");
+    if (request.overwrite) throw InputError("--resume continues a run; --overwrite cannot be combined with it");
+    refuseFrozenOverrides(overrides);
     checkpoint = readCheckpoint(outdir / "checkpoint.h5");
     header = checkpoint->header;
-    config = parseConfig(header.config_toml, header.config_source, header.base_dir, overrides);
-    checkResumable(parseConfig(header.config_toml, header.config_source, header.base_dir, {}), config,
-                   checkpoint->state.time);
+    // Errors name the stored config (its line numbers are the stored text's, not the file's).
+    const std::string source = fmt::format("{} (the config stored in {})", header.config_source,
+                                           (outdir / "checkpoint.h5").string());
+    config = parseConfig(header.config_toml, source, header.base_dir, overrides);
+    checkResumable(parseConfig(header.config_toml, source, header.base_dir, {}), config, checkpoint->state.time);
+    const std::string trajectory_run = trajectoryRunId(outdir);
+    if (trajectory_run != header.run_id)
+      throw InputError(fmt::format("{}: checkpoint.h5 belongs to another run than {} (a checkpoint copied in, or "
+                                   "a damaged trajectory); cannot resume",
+                                   outdir.string(), trajectory_run.empty() ? "the missing trajectory.h5"
+                                                                            : "trajectory.h5"));
   } else {
     config = loadConfig(request.config, overrides);
     outdir = request.output_dir.empty() ? std::filesystem::path(request.config.stem().string() + "_out")
                                         : request.output_dir;
     header.config_source = request.config.string();
     header.base_dir = request.config.parent_path().string();
+    header.run_id = runId(config.effective_toml);
   }
   header.config_toml = config.effective_toml;
-  std::error_code ec;
-  std::filesystem::create_directories(outdir, ec);
-  if (ec) throw InputError(fmt::format("{}: cannot create output folder: {}", outdir.string(), ec.message()));
+  // Everything that can refuse the input comes before anything is written.
+  auto system = std::make_unique<System>(config, checkpoint ? &checkpoint->state : nullptr);
+  checkChemistryLoad(*system, config);
+  if (!resume) prepareOutputFolder(outdir, request.overwrite);
 
   setUpLogging(outdir, resume);
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",
                resume ? outdir.string() : request.config.string(), config.simulation.seed, request.threads,
                request.threads == 1 ? "" : "s");
-
-  auto system = std::make_unique<System>(config, checkpoint ? &checkpoint->state : nullptr);
   for (const auto& m : system->membranes())
     spdlog::info("membrane \"{}\": {} vertices, {} triangles, {}", m->name(), m->mesh().numVertices(),
                  m->mesh().numFaces(), m->isClosed() ? "closed" : "open (boundary fixed)");
 
-  TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume);
+  TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume, header.run_id);
   const bool live = !request.quiet && isatty(STDERR_FILENO);
-  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live);
+  const StopSignals stop;
+  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live, &stop);
   Simulation simulation(*system, config.simulation, config.mechanics, observer);
+  RunOutcome outcome;
   try {
-    simulation.run(!resume);
+    outcome = simulation.run(!resume);
   } catch (const RunError& e) {
     observer.finishProgress();
-    spdlog::error("run failed at t = {:.6g} s (window {}): {}; the last snapshot and checkpoint are kept",
-                  system->time(), system->step, e.what());
-    throw;
+    const double kept = observer.lastCheckpointTime();
+    const std::string status =
+        kept >= 0 ? fmt::format("the snapshots so far and the checkpoint of t = {:.6g} s are kept; fix the cause and "
+                                "continue with --resume {}",
+                                kept, outdir.string())
+        : resume ? "the snapshots and checkpoint it resumed from are kept"
+                 : "no checkpoint was written";
+    spdlog::error("run failed at t = {:.6g} s (window {}): {}; {}", system->time(), system->step, e.what(), status);
+    throw RunError(fmt::format("{} ({})", e.what(), status));
   }
   observer.finishProgress();
+  if (outcome == RunOutcome::kStopped) {
+    spdlog::warn("stopped by signal {} at t = {:.6g} s (window {}) after writing a checkpoint; continue with "
+                 "cortex run --resume {}",
+                 stop.signal(), system->time(), system->step, outdir.string());
+    return outcome;
+  }
 
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeJsonAtomically(outdir / "summary.json",
                       summarize(*system, {config.simulation.seed, request.threads, wall}));
   logThroughput(*system, wall);
   spdlog::info("finished at t = {:.6g} s in {:.2f} s wall; output in {}", system->time(), wall, outdir.string());
+  return outcome;
 }
 
 std::string checkConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
@@ -142,6 +242,7 @@ std::string checkConfig(const std::filesystem::path& file, const std::vector<std
   // Everything a run builds before its first step (meshes, filament placement, engines)
   // is built here too, so that check and run refuse the same inputs.
   const auto system = std::make_unique<System>(config);
+  checkChemistryLoad(*system, config);
   const std::string chemistry =
       system->chemistry() ? fmt::format(", {} species, {} reactions in {} compartments",
                                         system->chemistryModel().species.size(),

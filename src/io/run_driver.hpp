@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/simulation.hpp"
+
 namespace cortex {
 
 struct RunRequest {
@@ -17,10 +19,12 @@ struct RunRequest {
   std::optional<std::int64_t> seed;    // --seed
   int threads = 1;
   bool quiet = false;                  // no progress line on the terminal
+  bool overwrite = false;              // a fresh run may replace an earlier run's results
 };
 
-// Throws InputError (bad input) or RunError (failure during the run).
-void runSimulation(const RunRequest& request);
+// Throws InputError (bad input) or RunError (failure during the run). kStopped: a signal
+// stopped the run after a checkpoint (exit code 3; resume it).
+RunOutcome runSimulation(const RunRequest& request);
 // Validates a config (and builds its meshes) without running; returns a one-line report.
 std::string checkConfig(const std::filesystem::path& config, const std::vector<std::string>& overrides);
 

@@ -24,14 +24,16 @@ void logFilaments(const System& system) {
 }  // namespace
 
 OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader header,
-                               TrajectoryWriter& writer, double end_time, bool live_progress)
+                               TrajectoryWriter& writer, double end_time, bool live_progress,
+                               const StopSignals* stop)
     : outdir_(std::move(outdir)),
       header_(std::move(header)),
       writer_(writer),
       end_time_(end_time),
       live_(live_progress),
       start_(std::chrono::steady_clock::now()),
-      last_report_(start_) {}
+      last_report_(start_),
+      stop_(stop) {}
 
 void OutputObserver::onSnapshot(const System& system) {
   writer_.write(makeFrame(system));
@@ -50,6 +52,7 @@ void OutputObserver::onSnapshot(const System& system) {
 void OutputObserver::onCheckpoint(const System& system) {
   header_.next_snapshot = writer_.nextIndex();
   writeCheckpoint(outdir_ / "checkpoint.h5", header_, system.state());
+  last_checkpoint_ = system.time();
 }
 
 void OutputObserver::onWindow(const System& system, const MinimizationResult& result) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "io/checkpoint.hpp"
+#include "io/stop_signals.hpp"
 #include "io/trajectory_writer.hpp"
 #include "sim/simulation.hpp"
 
@@ -13,12 +14,16 @@ namespace cortex {
 
 class OutputObserver final : public RunObserver {
  public:
+  // `stop` (may be null): signals that ask the run to stop.
   OutputObserver(std::filesystem::path outdir, CheckpointHeader header, TrajectoryWriter& writer,
-                 double end_time, bool live_progress);
+                 double end_time, bool live_progress, const StopSignals* stop);
   void onSnapshot(const System& system) override;
   void onCheckpoint(const System& system) override;
   void onWindow(const System& system, const MinimizationResult& result) override;
+  bool stopRequested() const override { return stop_ && stop_->requested(); }
   void finishProgress();
+  // Time (s) of the last checkpoint this observer wrote; negative if none.
+  double lastCheckpointTime() const { return last_checkpoint_; }
 
  private:
   std::filesystem::path outdir_;
@@ -28,6 +33,8 @@ class OutputObserver final : public RunObserver {
   bool live_;
   std::chrono::steady_clock::time_point start_, last_report_;
   double start_sim_time_ = -1.0;
+  const StopSignals* stop_;
+  double last_checkpoint_ = -1.0;
 };
 
 }  // namespace cortex

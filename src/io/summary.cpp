@@ -1,8 +1,8 @@
 #include "io/summary.hpp"
 
-#include <fstream>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "mesh/mesh_quality.hpp"
 
 namespace cortex {
@@ -129,13 +129,7 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
 }
 
 void writeJsonAtomically(const std::filesystem::path& file, const nlohmann::json& json) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << json.dump(2) << '\n';
-    if (!out) throw RunError("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, file);
+  writeFileAtomically(file, json.dump(2) + "\n");
 }
 
 }  // namespace cortex

@@ -3,39 +3,36 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace cortex {
 namespace {
 
-constexpr const char* kH5Name = "trajectory.h5";  // the XDMF refers to it by this relative name
-
-// A snapshot group's name, or -1 for anything else found under /snapshots.
+// The index of a snapshot file "NNNNNN.h5", or -1 for any other name.
 std::int64_t parseIndex(const std::string& name) {
-  const bool digits = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    return c >= '0' && c <= '9';
-  });
-  return digits ? std::stoll(name) : -1;
+  if (name.size() != 9 || name.compare(6, 3, ".h5") != 0) return -1;
+  const bool digits = std::all_of(name.begin(), name.begin() + 6, [](char c) { return c >= '0' && c <= '9'; });
+  return digits ? std::stoll(name.substr(0, 6)) : -1;
 }
 
-// Rebuilds the XDMF description of a snapshot already in the file (for a resumed run).
+constexpr const char* kIndexName = "trajectory.h5";
+constexpr const char* kIndexFormat = "cortex trajectory 2";
+
+// The XDMF description of a snapshot file already written (for a resumed run).
 XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
-  const std::string group = snapshotGroup(index);
-  XdmfSnapshot snapshot{index, file.attributeDouble(group, "time"), {}, std::nullopt};
-  const std::string filaments = group + "/filaments";
-  if (file.exists(filaments)) {
+  XdmfSnapshot snapshot{index, file.attributeDouble("/", "time"), {}, std::nullopt};
+  if (file.exists("/filaments")) {
     const auto rows = [&](const char* dataset) {
-      return static_cast<std::int64_t>(file.shape(filaments + dataset).at(0));
+      return static_cast<std::int64_t>(file.shape(std::string("/filaments") + dataset).at(0));
     };
     snapshot.filaments = XdmfFilaments{rows("/beads"), rows("/cylinders"), rows("/linkers"), rows("/motors")};
   }
-  const std::string membranes = group + "/membranes";
-  if (!file.exists(membranes)) return snapshot;
-  for (const std::string& name : file.children(membranes)) {
-    const std::string path = membranes + "/" + name;
+  if (!file.exists("/membranes")) return snapshot;
+  for (const std::string& name : file.children("/membranes")) {
+    const std::string path = "/membranes/" + name;
     const auto rows = [&](const char* dataset) {
       return static_cast<std::int64_t>(file.shape(path + dataset).at(0));
     };
@@ -114,76 +111,77 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
 
 }  // namespace
 
-TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index,
-                                   bool append)
-    : outdir_(std::move(outdir)), next_index_(first_index) {
-  h5::File file = append ? h5::File::openReadWrite(h5Path()) : h5::File::create(h5Path());
-  if (file.exists("/snapshots")) {
-    for (const std::string& name : file.children("/snapshots")) {
-      const std::int64_t index = parseIndex(name);
-      if (index < 0) continue;
-      if (index >= first_index) {
-        file.remove("/snapshots/" + name);
-      } else {
-        snapshots_.push_back(describe(file, index));
-      }
+TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append,
+                                   std::string run_id)
+    : outdir_(std::move(outdir)), next_index_(first_index), run_id_(std::move(run_id)) {
+  const std::filesystem::path folder = outdir_ / "snapshots";
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) throw RunError(fmt::format("cannot create '{}': {}", folder.string(), ec.message()));
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    const std::int64_t index = parseIndex(name);
+    // Later snapshots are written again; temporary files are what a crash left.
+    if (!append || index < 0 || index >= first_index) {
+      if (index >= 0 || name.ends_with(".tmp")) std::filesystem::remove(entry.path(), ec);
+      continue;
+    }
+    try {
+      snapshots_.push_back(describe(h5::File::openReadOnly(entry.path()), index));
+    } catch (const std::runtime_error& e) {
+      throw RunError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
+                                 entry.path().string(), e.what()));
     }
   }
-  file.createGroups("/snapshots");
-  file.flush();
-  // Names sort as numbers only up to 999999; the XDMF must list snapshots in time order.
+  // The XDMF must list snapshots in time order.
   std::sort(snapshots_.begin(), snapshots_.end(),
             [](const XdmfSnapshot& a, const XdmfSnapshot& b) { return a.index < b.index; });
-  // Also replaces any XDMF a previous run left here, which would point at deleted snapshots.
-  writeXdmf();
+  writeIndex();
 }
 
 void TrajectoryWriter::write(const Frame& frame) {
   XdmfSnapshot snapshot{next_index_, frame.time, {}, std::nullopt};
+  const std::filesystem::path path = outdir_ / snapshotFile(next_index_);
+  std::string bytes;
   {
-    // The file existed since construction; losing it mid-run is a run failure, not bad input.
-    h5::File file = [&] {
-      try {
-        return h5::File::openReadWrite(h5Path());
-      } catch (const InputError& e) {
-        throw RunError(e.what());
-      }
-    }();
-    const std::string group = snapshotGroup(next_index_);
-    file.createGroups(group);
-    file.setAttribute(group, "time", frame.time);
-    file.setAttribute(group, "step", frame.step);
-    for (const MembraneFrame& membrane : frame.membranes) {
-      snapshot.membranes.push_back(writeMembrane(file, group, membrane));
-    }
+    h5::File file = h5::File::createInMemory(path);
+    file.setAttribute("/", "time", frame.time);
+    file.setAttribute("/", "step", frame.step);
+    for (const MembraneFrame& membrane : frame.membranes) snapshot.membranes.push_back(writeMembrane(file, "", membrane));
     const h5::Shape grid(frame.grid_shape.begin(), frame.grid_shape.end());
     for (const SpeciesField& field : frame.compartment_species)
-      file.write(group + "/compartments/species/" + field.name, field.copies, grid);
-    if (frame.filaments) snapshot.filaments = writeFilaments(file, group, *frame.filaments);
-    file.flush();
-  }  // the file closes here
+      file.write("/compartments/species/" + field.name, field.copies, grid);
+    if (frame.filaments) snapshot.filaments = writeFilaments(file, "", *frame.filaments);
+    bytes = file.image();
+  }
+  writeFileAtomically(path, bytes);
   snapshots_.push_back(std::move(snapshot));
   ++next_index_;
-  writeXdmf();
+  writeIndex();
 }
 
-std::filesystem::path TrajectoryWriter::h5Path() const { return outdir_ / kH5Name; }
-
-void TrajectoryWriter::writeXdmf() const {
-  // Write-then-rename, so a reader (or a crash) never sees a half-written XDMF.
-  const std::filesystem::path target = outdir_ / "trajectory.xdmf";
-  const std::filesystem::path temp = outdir_ / "trajectory.xdmf.tmp";
+// The index first, then the XDMF: each is whole or absent, and both list only snapshot
+// files that are whole.
+void TrajectoryWriter::writeIndex() const {
+  std::string bytes;
   {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << trajectoryXdmf(snapshots_, kH5Name);
-    out.close();
-    if (!out) throw RunError(fmt::format("cannot write '{}'", temp.string()));
+    h5::File index = h5::File::createInMemory(outdir_ / kIndexName);
+    index.setAttribute("/", "format", std::string(kIndexFormat));
+    index.setAttribute("/", "run_id", run_id_);
+    index.createGroups("/snapshots");
+    for (const XdmfSnapshot& s : snapshots_) index.linkExternal(snapshotGroup(s.index), snapshotFile(s.index), "/");
+    bytes = index.image();
   }
-  std::error_code error;
-  std::filesystem::rename(temp, target, error);
-  if (error) {
-    throw RunError(fmt::format("cannot rename '{}' to '{}': {}", temp.string(), target.string(),
-                               error.message()));
+  writeFileAtomically(outdir_ / kIndexName, bytes);
+  writeFileAtomically(outdir_ / "trajectory.xdmf", trajectoryXdmf(snapshots_));
+}
+
+std::string trajectoryRunId(const std::filesystem::path& outdir) {
+  try {
+    const h5::File index = h5::File::openReadOnly(outdir / kIndexName);
+    return index.attributeString("/", "run_id");
+  } catch (const std::runtime_error&) {
+    return "";
   }
 }
 

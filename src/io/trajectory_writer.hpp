@@ -1,9 +1,14 @@
-// Writes snapshots to OUTDIR/trajectory.h5 (layout in docs/output.md) and keeps
-// OUTDIR/trajectory.xdmf beside it up to date so ParaView can open the series at any time.
+// Writes snapshots and keeps the trajectory readable after a crash at any moment: each
+// snapshot is its own HDF5 file, OUTDIR/snapshots/NNNNNN.h5, built in memory and written
+// atomically; OUTDIR/trajectory.h5 is an index whose groups /snapshots/NNNNNN are
+// external links to those files (h5py and ParaView follow them; layout in
+// docs/output.md), rewritten atomically after each snapshot with trajectory.xdmf. A
+// snapshot appears in the index only once its file is whole.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "io/xdmf.hpp"
@@ -13,24 +18,26 @@ namespace cortex {
 
 class TrajectoryWriter : public FrameWriter {
  public:
-  // Without `append`, creates trajectory.h5 afresh. With `append` (a resumed run), reopens it
-  // and deletes the snapshots numbered >= first_index, which the resumed run writes again.
-  // Throws InputError if `append` and the file cannot be opened.
-  TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append);
+  // A fresh run (append = false) starts an empty trajectory. A resumed one keeps the
+  // snapshot files numbered below first_index, deletes later ones and any temporary file
+  // a crash left, and rebuilds the index. `run_id` is stored in the index.
+  TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append, std::string run_id);
 
-  // Writes snapshot nextIndex() and closes the file again, so a crash never leaves it
-  // half-open: every completed snapshot stays readable. Then rewrites the XDMF.
+  // Writes snapshot nextIndex(), then the index and the XDMF.
   void write(const Frame& frame) override;
 
   std::int64_t nextIndex() const { return next_index_; }
 
  private:
-  std::filesystem::path h5Path() const;
-  void writeXdmf() const;
+  void writeIndex() const;
 
   std::filesystem::path outdir_;
   std::int64_t next_index_;
-  std::vector<XdmfSnapshot> snapshots_;  // what the file holds, to regenerate the XDMF
+  std::string run_id_;
+  std::vector<XdmfSnapshot> snapshots_;  // what the index lists
 };
+
+// The run id stored in OUTDIR/trajectory.h5; empty if it has none or cannot be read.
+std::string trajectoryRunId(const std::filesystem::path& outdir);
 
 }  // namespace cortex

@@ -24,11 +24,9 @@ std::string escapeXml(const std::string& text) {
   return escaped;
 }
 
-void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const XdmfMembrane& membrane,
-                        const std::string& h5_name) {
-  // Heavy data stays in the HDF5 file; each DataItem names "file:/dataset".
-  const std::string data = escapeXml(
-      fmt::format("{}:{}/membranes/{}", h5_name, snapshotGroup(snapshot.index), membrane.name));
+void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const XdmfMembrane& membrane) {
+  // Heavy data stays in the HDF5 files; each DataItem names "file:/dataset".
+  const std::string data = escapeXml(fmt::format("{}:/membranes/{}", snapshotFile(snapshot.index), membrane.name));
   const std::int64_t n = membrane.vertices;
   const std::int64_t m = membrane.triangles;
   fmt::format_to(std::back_inserter(xml),
@@ -82,9 +80,8 @@ void appendSegmentGrid(std::string& xml, const SegmentGrid& grid) {
   xml += "        </Grid>\n";
 }
 
-void appendFilamentGrids(std::string& xml, const XdmfSnapshot& snapshot, const XdmfFilaments& f,
-                         const std::string& h5_name) {
-  const std::string data = escapeXml(fmt::format("{}:{}/filaments/", h5_name, snapshotGroup(snapshot.index)));
+void appendFilamentGrids(std::string& xml, const XdmfSnapshot& snapshot, const XdmfFilaments& f) {
+  const std::string data = escapeXml(fmt::format("{}:/filaments/", snapshotFile(snapshot.index)));
   if (f.cylinders > 0) {
     appendSegmentGrid(xml, {"filaments", f.cylinders, f.beads, data + "cylinders", data + "beads",
                             {{"filament", data + "cylinder_filament", "Int", "4"}}});
@@ -104,8 +101,9 @@ void appendFilamentGrids(std::string& xml, const XdmfSnapshot& snapshot, const X
 }  // namespace
 
 std::string snapshotGroup(std::int64_t index) { return fmt::format("/snapshots/{:06d}", index); }
+std::string snapshotFile(std::int64_t index) { return fmt::format("snapshots/{:06d}.h5", index); }
 
-std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots, const std::string& h5_name) {
+std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots) {
   // Xdmf 2 rather than 3: ParaView's default XDMF reader handles it most reliably.
   std::string xml = R"(<?xml version="1.0" ?>
 <!DOCTYPE Xdmf SYSTEM "Xdmf.dtd" []>
@@ -120,9 +118,9 @@ std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots, const std
                    "CollectionType=\"Spatial\">\n        <Time Value=\"{}\"/>\n",
                    snapshot.index, snapshot.time);
     for (const XdmfMembrane& membrane : snapshot.membranes) {
-      appendMembraneGrid(xml, snapshot, membrane, h5_name);
+      appendMembraneGrid(xml, snapshot, membrane);
     }
-    if (snapshot.filaments) appendFilamentGrids(xml, snapshot, *snapshot.filaments, h5_name);
+    if (snapshot.filaments) appendFilamentGrids(xml, snapshot, *snapshot.filaments);
     xml += "      </Grid>\n";
   }
   xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";

@@ -1,4 +1,5 @@
-// The XDMF (version 2) index of trajectory.h5, so ParaView opens the whole time series.
+// The XDMF (version 2) description of a trajectory, so ParaView opens the whole time
+// series; it points at the snapshot files (snapshots/NNNNNN.h5) directly.
 // Pure text generation, kept apart from the writer so it can be tested without files.
 #pragma once
 
@@ -25,19 +26,21 @@ struct XdmfFilaments {
 };
 
 struct XdmfSnapshot {
-  std::int64_t index = 0;  // the group /snapshots/%06d in trajectory.h5
+  std::int64_t index = 0;  // the file snapshots/%06d.h5 (the group /snapshots/%06d of trajectory.h5)
   double time = 0.0;       // s
   std::vector<XdmfMembrane> membranes;
   std::optional<XdmfFilaments> filaments;
 };
 
-// "/snapshots/000042": where snapshot `index` lives in trajectory.h5.
+// "/snapshots/000042": where snapshot `index` appears in trajectory.h5.
 std::string snapshotGroup(std::int64_t index);
+// "snapshots/000042.h5": the file holding snapshot `index`, relative to the output folder.
+std::string snapshotFile(std::int64_t index);
 
 // The whole .xdmf document: a temporal collection of per-snapshot spatial collections,
 // one triangle grid per membrane, and 2-node polyline grids for filament cylinders
-// ("filaments"), bound linkers ("linkers") and bound motors ("motors"). `h5_name` is the HDF5 file's path relative to the .xdmf
-// (just the file name, so the output folder can be moved).
-std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots, const std::string& h5_name);
+// ("filaments"), bound linkers ("linkers") and bound motors ("motors"). Data paths are
+// relative to the output folder, so the folder can be moved.
+std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots);
 
 }  // namespace cortex

@@ -15,7 +15,17 @@
 
 namespace cortex {
 
+// Larger than any mesh cortex can simulate; also stops /dev/zero and the like early.
+constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{4} << 30;
+
 TriangleSoup readMeshFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(fmt::format("{}: no such mesh file", path.string()));
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(fmt::format("{}: not a regular file (a folder or a device?)", path.string()));
+  if (std::filesystem::file_size(path, ec) > kMaxMeshFileBytes)
+    throw InputError(fmt::format("{}: larger than 4 GiB, not a mesh cortex can use", path.string()));
   std::string ext = path.extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   TriangleSoup soup;

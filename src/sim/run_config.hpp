@@ -63,6 +63,7 @@ struct ReactionRestriction {
 // System is assembled.
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
+  double max_events_per_window = 1e9;  // ChemistryEngine::setEventLimit
   CompartmentGrid grid;
   std::vector<SpeciesDef> species;
   std::vector<ReactionDef> reactions;

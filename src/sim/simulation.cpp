@@ -112,7 +112,7 @@ MinimizationResult Simulation::relax() {
   return r;
 }
 
-void Simulation::run(bool fresh) {
+RunOutcome Simulation::run(bool fresh) {
   const double checkpoint_interval =
       sim_.checkpoint_interval > 0 ? sim_.checkpoint_interval : sim_.snapshot_interval;
   if (fresh) {
@@ -121,6 +121,7 @@ void Simulation::run(bool fresh) {
     observer_.onWindow(system_, relax());
     observer_.onSnapshot(system_);
     observer_.onCheckpoint(system_);
+    if (observer_.stopRequested()) return RunOutcome::kStopped;
   }
   for (std::int64_t k = system_.step + 1; k <= totalWindows(); ++k) {
     advanceChemistry(timeOfWindow(k));
@@ -129,8 +130,16 @@ void Simulation::run(bool fresh) {
     system_.step = k;
     observer_.onWindow(system_, r);
     if (crosses(sim_.snapshot_interval, k)) observer_.onSnapshot(system_);
-    if (crosses(checkpoint_interval, k)) observer_.onCheckpoint(system_);
+    const bool checkpointed = crosses(checkpoint_interval, k);
+    if (checkpointed) observer_.onCheckpoint(system_);
+    // A stop keeps the window just finished: the checkpoint makes the resume continue
+    // exactly where an uninterrupted run would.
+    if (observer_.stopRequested() && k < totalWindows()) {
+      if (!checkpointed) observer_.onCheckpoint(system_);
+      return RunOutcome::kStopped;
+    }
   }
+  return RunOutcome::kFinished;
 }
 
 }  // namespace cortex

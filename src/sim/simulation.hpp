@@ -15,7 +15,12 @@ class RunObserver {
   virtual void onSnapshot(const System&) {}
   virtual void onCheckpoint(const System&) {}
   virtual void onWindow(const System&, const MinimizationResult&) {}
+  // Asked after every window: true stops the run there, after a checkpoint (a signal).
+  virtual bool stopRequested() const { return false; }
 };
+
+// How run() ended: at end_time, or early at a stop request with a checkpoint written.
+enum class RunOutcome { kFinished, kStopped };
 
 class Simulation {
  public:
@@ -23,7 +28,7 @@ class Simulation {
              RunObserver& observer);
   // A fresh run relaxes the initial state and writes snapshot 0 first; a resumed run
   // continues after system.step.
-  void run(bool fresh);
+  RunOutcome run(bool fresh);
   std::int64_t totalWindows() const;
   double timeOfWindow(std::int64_t k) const;
 

@@ -97,6 +97,7 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
       if (fractions[s]) weights[s] = fractions[s]->volume;
     chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, initialCopies(cc, seed, weights), seed);
   }
+  chemistry_->setEventLimit(cc.max_events_per_window);
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_reactions));
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);

@@ -211,10 +211,10 @@ TEST(FilamentOutputs, TrajectorySummaryAndLogAreConsistent) {
 
   // XDMF: a filament grid per snapshot; linker and motor grids only where some are bound.
   const std::string xdmf = readFile(dir / "out" / "trajectory.xdmf");
-  EXPECT_NE(xdmf.find("trajectory.h5:/snapshots/000000/filaments/cylinders"), std::string::npos);
+  EXPECT_NE(xdmf.find("snapshots/000000.h5:/filaments/cylinders"), std::string::npos);
   EXPECT_NE(xdmf.find("TopologyType=\"Polyline\" NodesPerElement=\"2\""), std::string::npos);
   EXPECT_EQ(xdmf.find("/snapshots/000000/filaments/linkers"), std::string::npos);
-  EXPECT_NE(xdmf.find("/snapshots/000004/filaments/linkers"), std::string::npos);
+  EXPECT_NE(xdmf.find("snapshots/000004.h5:/filaments/linkers"), std::string::npos);
 
   // The log has a filament line per snapshot.
   const std::string log = readFile(dir / "out" / "cortex.log");

@@ -1,5 +1,6 @@
 // The binding-pair search against brute force: every pair of sites on different filaments
-// within the distance range, found once, filed under its first site's compartment.
+// within the distance range, counted once under its first site's compartment, and picked
+// exactly once when every slice of (0, 1) is drawn.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -39,11 +40,12 @@ TEST(BindingCandidates, SitePairsMatchBruteForce) {
     int every;
   };
   for (const Case& c : {Case{BinderKind::kLinker, 30.0, 40.0, 1}, Case{BinderKind::kMotor, 175.0, 225.0, 5}}) {
-    const BindingCandidates found = findSitePairs(net, grid, c.kind, 0, c.rmin, c.rmax, c.every);
+    const BindingCandidates found(net, grid, c.kind, 0, c.rmin, c.rmax, c.every);
     std::set<std::array<std::int64_t, 5>> got, expected;
     for (Index comp = 0; comp < grid.count(); ++comp)
-      for (Index k = found.start[comp]; k < found.start[comp + 1]; ++k) {
-        const BindingCandidate& p = found.list[k];
+      for (std::int64_t k = 0; k < found.count(comp); ++k) {
+        // The k-th pair: u in the middle of its 1/n slice.
+        const BindingCandidate p = found.pick(comp, (static_cast<double>(k) + 0.5) / static_cast<double>(found.count(comp)));
         // Filed under the first site's compartment.
         EXPECT_EQ(grid.locate(net.sitePosition(c.kind, 0, p.filament[0], p.site[0])), comp);
         std::array<std::int64_t, 5> key{p.filament[0], p.site[0], p.filament[1], p.site[1], 0};

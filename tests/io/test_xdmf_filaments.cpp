@@ -26,17 +26,17 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 
 TEST(XdmfFilaments, GridsWithElementsOnly) {
   XdmfSnapshot s{3, 0.5, {}, XdmfFilaments{12, 9, 0, 4}};
-  const std::string xml = trajectoryXdmf({s}, "trajectory.h5");
+  const std::string xml = trajectoryXdmf({s});
   EXPECT_NE(xml.find(R"(<Grid Name="filaments" GridType="Uniform">)"), std::string::npos);
   EXPECT_NE(xml.find(R"(NodesPerElement="2" NumberOfElements="9")"), std::string::npos);
-  EXPECT_NE(xml.find(R"(Dimensions="9 2">trajectory.h5:/snapshots/000003/filaments/cylinders<)"), std::string::npos);
-  EXPECT_NE(xml.find(R"(Dimensions="12 3">trajectory.h5:/snapshots/000003/filaments/beads<)"), std::string::npos);
+  EXPECT_NE(xml.find(R"(Dimensions="9 2">snapshots/000003.h5:/filaments/cylinders<)"), std::string::npos);
+  EXPECT_NE(xml.find(R"(Dimensions="12 3">snapshots/000003.h5:/filaments/beads<)"), std::string::npos);
   EXPECT_EQ(xml.find("Name=\"linkers\""), std::string::npos);  // none bound: no empty grid
   // Motor ends: the (4,2,3) dataset read as 8 points.
-  EXPECT_NE(xml.find(R"(Dimensions="8 3">trajectory.h5:/snapshots/000003/filaments/motors<)"), std::string::npos);
-  EXPECT_NE(xml.find(R"(Dimensions="4 2">trajectory.h5:/snapshots/000003/filaments/motor_cells<)"), std::string::npos);
+  EXPECT_NE(xml.find(R"(Dimensions="8 3">snapshots/000003.h5:/filaments/motors<)"), std::string::npos);
+  EXPECT_NE(xml.find(R"(Dimensions="4 2">snapshots/000003.h5:/filaments/motor_cells<)"), std::string::npos);
 
-  const std::string empty = trajectoryXdmf({XdmfSnapshot{0, 0.0, {}, XdmfFilaments{}}}, "trajectory.h5");
+  const std::string empty = trajectoryXdmf({XdmfSnapshot{0, 0.0, {}, XdmfFilaments{}}});
   EXPECT_EQ(empty.find("filaments/"), std::string::npos);
   EXPECT_EQ(occurrences(empty, "<Grid "), 2u);  // the temporal and the one spatial collection
 }
@@ -63,7 +63,7 @@ TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {
   f.linker_types = {0};
   f.linker_tensions = {1.5};
   {
-    TrajectoryWriter writer(dir, 0, false);
+    TrajectoryWriter writer(dir, 0, false, "run");
     writer.write(empty);
     writer.write(full);
   }
@@ -89,7 +89,7 @@ TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {
   }
   EXPECT_NE(before.find("Name=\"linkers\""), std::string::npos);
   {
-    TrajectoryWriter resumed(dir, 2, true);  // keeps both snapshots, describes them from the file
+    TrajectoryWriter resumed(dir, 2, true, "run");  // keeps both snapshots, describes them from the file
   }
   std::ifstream in(dir / "trajectory.xdmf");
   std::stringstream after;
@@ -113,7 +113,7 @@ TEST(XdmfFilaments, InconsistentFrameIsRejected) {
   f.monomers = {1};
   f.cylinders = {0, 1};
   f.cylinder_filament = {0};
-  TrajectoryWriter writer(dir, 0, false);
+  TrajectoryWriter writer(dir, 0, false, "run");
   EXPECT_THROW(writer.write(frame), std::exception);
   fs::remove_all(dir);
 }
