@@ -1,6 +1,8 @@
 // Meshes shared by the tests: spheres and patches, optionally randomly perturbed.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "mesh/icosphere.hpp"
@@ -26,6 +28,22 @@ inline SurfaceMesh patchMesh(double size, double edge, double perturbation = 0.0
   TriangleSoup soup = planarPatch(Vec3(0, 0, 0), size, size, edge);
   if (perturbation > 0.0) perturb(soup, perturbation, 11);
   return SurfaceMesh::fromSoup(soup, "test patch");
+}
+
+// Largest |h_v − mean of h over v's neighbours| relative to the mean |h|: how far a
+// per-vertex field (mean curvature) is from smooth. A relaxed smooth shape reads a few
+// percent; curvature hot spots read tens of percent or more.
+inline double curvatureRoughness(const SurfaceMesh& mesh, const std::vector<double>& h) {
+  double mean_abs = 0.0, worst = 0.0;
+  for (double x : h) mean_abs += std::abs(x);
+  mean_abs /= static_cast<double>(h.size());
+  for (Index v = 0; v < mesh.numVertices(); ++v) {
+    double ring = 0.0;
+    int k = 0;
+    for (Index e : mesh.outgoingHalfedges(v)) ring += h[static_cast<std::size_t>(mesh.tip(e))], ++k;
+    worst = std::max(worst, std::abs(h[static_cast<std::size_t>(v)] - ring / k));
+  }
+  return worst / mean_abs;
 }
 
 inline std::vector<double> flatPositions(const SurfaceMesh& m) {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Render a membrane of a cortex run with matplotlib, coloured by mean curvature.
 
-Reads OUTDIR/trajectory.h5 (layout: ARCHITECTURE.md, "Output", and docs/output.md):
+Reads OUTDIR/trajectory.h5 (layout: docs/output.md):
   /snapshots/NNNNNN/membranes/<name>/vertices        (n,3) nm
   /snapshots/NNNNNN/membranes/<name>/triangles       (m,3)
   /snapshots/NNNNNN/membranes/<name>/mean_curvature  (n)   1/nm

@@ -30,8 +30,10 @@ SimulationConfig readSimulation(const ConfigReader& r) {
 
 MinimizerSettings readMechanics(const ConfigReader& r) {
   MinimizerSettings m;
-  const std::string kind = r.choice("minimizer", "cg", {"cg", "lbfgs"});
-  m.kind = kind == "lbfgs" ? MinimizerKind::kLbfgs : MinimizerKind::kConjugateGradient;
+  const std::string kind = r.choice("minimizer", "auto", {"auto", "cg", "lbfgs"});
+  m.kind = kind == "lbfgs" ? MinimizerKind::kLbfgs
+           : kind == "cg"  ? MinimizerKind::kConjugateGradient
+                           : MinimizerKind::kAuto;
   m.force_tolerance = r.number("force_tolerance", m.force_tolerance, Range::positive(), "pN");
   m.max_iterations = r.integer("max_iterations", m.max_iterations, 1, 1'000'000'000);
   m.max_step = r.number("max_step", m.max_step, Range::positive(), "nm");
@@ -74,10 +76,14 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
   }
 }
 
-// Each term's parameters into its own struct (membrane.hpp).
-MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
+// Each term's parameters into its own struct (membrane.hpp). How area and volume are
+// held depends on the minimizer: the default relaxation holds them exactly unless a
+// modulus asks for the penalty form; cg and lbfgs have only the penalty forms.
+MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, MinimizerKind minimizer) {
   MembraneMechanics m;
   const Range any{};
+  const bool by_shape = minimizer == MinimizerKind::kAuto;
+  const char* other_minimizer = "[mechanics] minimizer = \"cg\" or \"lbfgs\"";
   BendingParameters& bending = m.bending;
   bending.modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
   bending.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
@@ -89,13 +95,32 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
                           : CurvatureEstimator::kUnsigned;
   if (!bending.spontaneous_curvature.isZero() && bending.estimator == CurvatureEstimator::kUnsigned)
     r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
-  const std::string model = r.choice("area_model", "global", {"global", "per_vertex", "none"});
-  m.area.model = model == "global" ? AreaModel::kGlobal : model == "per_vertex" ? AreaModel::kPerVertex : AreaModel::kNone;
-  m.area.modulus = r.schedule("area_modulus", model == "none" ? 0.0 : 400.0, Range::nonNegative(), "pN/nm");
-  if (model == "none" && !m.area.modulus.isZero()) r.fail("area_modulus", "is set but area_model = \"none\"");
+
+  const char* default_area = by_shape && !r.has("area_modulus") ? "exact" : "global";
+  const std::string model = r.choice("area_model", default_area, {"exact", "global", "per_vertex", "none"});
+  m.area.model = model == "exact"        ? AreaModel::kExact
+                 : model == "global"     ? AreaModel::kGlobal
+                 : model == "per_vertex" ? AreaModel::kPerVertex
+                                         : AreaModel::kNone;
+  const bool penalty = model == "global" || model == "per_vertex";
+  m.area.modulus = r.schedule("area_modulus", penalty ? 400.0 : 0.0, Range::nonNegative(), "pN/nm");
+  if (!penalty && !m.area.modulus.isZero())
+    r.fail("area_modulus", fmt::format("is for the penalty area models (\"global\", \"per_vertex\"), not \"{}\"", model));
+  if (model == "exact" && !by_shape)
+    r.fail("area_model", fmt::format("\"exact\" needs the default minimizer ([mechanics] minimizer = \"auto\"); with "
+                                     "{} use the penalty \"global\" with an area_modulus",
+                                     "cg or lbfgs"));
+  if (model == "per_vertex" && by_shape)
+    r.fail("area_model", fmt::format("\"per_vertex\" treats vertices as material points, which the default "
+                                     "relaxation moves within the surface; use it with {}",
+                                     other_minimizer));
   m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
   m.tension.tension = r.schedule("tension", 0.0, any, "pN/nm");
   m.regularization.strength = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
+  if (by_shape && !m.regularization.strength.isZero())
+    r.fail("mesh_regularization", fmt::format("acts within the surface, which the default relaxation (normal "
+                                              "displacements, remeshing) keeps healthy without it; it is for {}",
+                                              other_minimizer));
 
   const char* volume_keys[] = {"volume_modulus", "reduced_volume", "target_volume"};
   if (!closed) {
@@ -109,15 +134,22 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed) {
   volume.target_volume = r.schedule("target_volume", std::nullopt, Range::positive(), "nm^3");
   if (volume.reduced_volume.isSet() && volume.target_volume.isSet())
     r.fail("target_volume", "give either reduced_volume or target_volume, not both");
+  const bool has_target = volume.reduced_volume.isSet() || volume.target_volume.isSet();
+  // A target without a modulus: held exactly (or refused where nothing could hold it).
+  volume.exact = has_target && !r.has("volume_modulus");
+  if (volume.exact && !by_shape)
+    r.fail(volume.reduced_volume.isSet() ? "reduced_volume" : "target_volume",
+           fmt::format("needs a volume_modulus with {} (the default minimizer holds it exactly)", other_minimizer));
   return m;
 }
 
-MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir) {
+MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir,
+                            MinimizerKind minimizer) {
   MembraneConfig m;
   m.name = r.name("name", fmt::format("membrane{}", index));
   readShape(r, m, base_dir);
   // Closedness of a loaded mesh is only known once it is read; sim/ checks it again.
-  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane");
+  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane", minimizer);
   m.remesh = r.boolean("remesh", false);
   // A loaded mesh has no mesh_size: its sizes default from its own mean edge (sim/).
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
@@ -157,7 +189,7 @@ Config parseConfig(const std::string& text, const std::string& source,
   if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
   const auto membranes = r.tableArray("membrane");
   for (std::size_t i = 0; i < membranes.size(); ++i) {
-    c.membranes.push_back(readMembrane(membranes[i], i, base_dir));
+    c.membranes.push_back(readMembrane(membranes[i], i, base_dir, c.mechanics.kind));
     for (std::size_t j = 0; j < i; ++j)
       if (c.membranes[j].name == c.membranes[i].name)
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));

@@ -128,12 +128,17 @@ void logThroughput(const System& system, double wall) {
   const RunCounters& c = system.counters;
   const std::int64_t evals = system.forceField().forceEvaluations();
   const double per_s = c.mechanics_seconds > 0 ? evals / c.mechanics_seconds : 0.0;
-  if (!system.membranes().empty())
-    spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s "
-               "({:.0f} force evaluations/s, {:.3g} vertex-gradient evaluations/s); remeshing {:.2f} s; "
-               "wall {:.2f} s",
-               c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s,
-               per_s * system.numVertices(), c.remesh_seconds, wall);
+  if (!system.membranes().empty()) {
+    std::string preconditioner;
+    if (c.preconditioner_factorizations > 0)
+      preconditioner = fmt::format(", Sobolev preconditioner {:.2f} s ({} factorizations)", c.preconditioner_seconds,
+                                   c.preconditioner_factorizations);
+    spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s ({:.0f} per s); "
+                 "of which forces {:.2f} s ({:.3g} vertex-gradient evaluations/s){}; remeshing {:.2f} s; wall {:.2f} s",
+                 c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s, c.force_seconds,
+                 c.force_seconds > 0 ? evals * static_cast<double>(system.numVertices()) / c.force_seconds : 0.0,
+                 preconditioner, c.remesh_seconds, wall);
+  }
   if (const FilamentNetwork* net = system.filaments())
     spdlog::info("filaments: {} beads; {} minimizations, {} force evaluations in {:.2f} s ({:.0f} force "
                  "evaluations/s); force-dependent rates and binding-pair search {:.2f} s",
@@ -218,12 +223,13 @@ RunOutcome runSimulation(const RunRequest& request) {
                                 kept, outdir.string())
         : resume ? "the snapshots and checkpoint it resumed from are kept"
                  : "no checkpoint was written";
-    spdlog::error("run failed at t = {:.6g} s (window {}): {}; {}", system->time(), system->step, e.what(), status);
+    spdlog::error("run failed at t = {:.6g} s ({} windows completed): {}; {}", system->time(), system->step, e.what(),
+                  status);
     throw RunError(fmt::format("{} ({})", e.what(), status));
   }
   observer.finishProgress();
   if (outcome == RunOutcome::kStopped) {
-    spdlog::warn("stopped by signal {} at t = {:.6g} s (window {}) after writing a checkpoint; continue with "
+    spdlog::warn("stopped by signal {} at t = {:.6g} s ({} windows completed) after writing a checkpoint; continue with "
                  "cortex run --resume {}",
                  stop.signal(), system->time(), system->step, outdir.string());
     return outcome;

@@ -1,5 +1,7 @@
 #include "io/summary.hpp"
 
+#include <cmath>
+
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -108,6 +110,10 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
     } else {
       entry["volume"] = nullptr;  // an open patch encloses no volume
     }
+    // Multipliers of exact constraints; null where the area or volume is not held exactly.
+    const auto orNull = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
+    entry["tension"] = orNull(m->equilibrium().tension);
+    entry["pressure"] = orNull(m->equilibrium().pressure);
     membranes.push_back(entry);
   }
   const RunCounters& c = system.counters;

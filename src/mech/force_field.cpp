@@ -1,24 +1,36 @@
 #include "mech/force_field.hpp"
 
+#include <chrono>
+
 namespace cortex {
 
-double ForceField::value(const Eigen::VectorXd& x) {
-  ++energy_evaluations_;
-  const Evaluation e{x.data(), nullptr, ++version_};
+double ForceField::value(const Eigen::VectorXd& x) { return evaluateTerms(all_, x, nullptr); }
+
+double ForceField::valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) {
+  return evaluateTerms(all_, x, &gradient);
+}
+
+double ForceField::evaluateTerms(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x,
+                                 Eigen::VectorXd* gradient) {
+  const auto start = std::chrono::steady_clock::now();
+  ++(gradient ? force_evaluations_ : energy_evaluations_);
+  if (gradient) gradient->setZero(x.size());
+  const Evaluation e{x.data(), gradient ? gradient->data() : nullptr, ++version_};
   double total = 0.0;
-  for (auto& term : terms_) total += term->evaluate(e);
+  for (EnergyTerm* term : terms) total += term->evaluate(e);
+  if (gradient) {
+    for (std::size_t i = 0; i < frozen_.size(); ++i)
+      if (frozen_[i]) (*gradient)[static_cast<Eigen::Index>(i)] = 0.0;
+    force_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   return total;
 }
 
-double ForceField::valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) {
-  ++force_evaluations_;
-  gradient.setZero(x.size());
-  const Evaluation e{x.data(), gradient.data(), ++version_};
-  double total = 0.0;
-  for (auto& term : terms_) total += term->evaluate(e);
-  for (std::size_t i = 0; i < frozen_.size(); ++i)
-    if (frozen_[i]) gradient[static_cast<Eigen::Index>(i)] = 0.0;
-  return total;
+std::vector<EnergyTerm*> ForceField::termsOf(const std::string& owner) const {
+  std::vector<EnergyTerm*> out;
+  for (EnergyTerm* t : all_)
+    if (t->owner() == owner) out.push_back(t);
+  return out;
 }
 
 std::vector<TermEnergy> ForceField::breakdown(const Eigen::VectorXd& x) {

@@ -21,6 +21,7 @@ class ForceField final : public Objective {
   template <class Term>
   Term& add(std::unique_ptr<Term> term) {
     Term& t = *term;
+    all_.push_back(&t);
     terms_.push_back(std::move(term));
     return t;
   }
@@ -32,6 +33,32 @@ class ForceField final : public Objective {
 
   double value(const Eigen::VectorXd& x) override;
   double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) override;
+  // The same for some of the terms (in their order here), counted as evaluations of the
+  // field: relaxing some bodies while the terms of the others are left out.
+  double evaluateTerms(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient);
+  // The terms acting on one body (EnergyTerm::owner), in order.
+  std::vector<EnergyTerm*> termsOf(const std::string& owner) const;
+  // Those terms as an Objective over all coordinates.
+  class Part final : public Objective {
+   public:
+    Part(ForceField& field, std::vector<EnergyTerm*> terms) : field_(field), terms_(std::move(terms)) {}
+    double value(const Eigen::VectorXd& x) override { return field_.evaluateTerms(terms_, x, nullptr); }
+    double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
+      return field_.evaluateTerms(terms_, x, &g);
+    }
+
+   private:
+    ForceField& field_;
+    std::vector<EnergyTerm*> terms_;
+  };
+  // A version no evaluation has used yet, for callers that evaluate terms themselves (the
+  // membrane relaxation): terms cache derived geometry by version.
+  std::uint64_t newVersion() { return ++version_; }
+  // Evaluations done (and timed) by such callers.
+  void countForceEvaluations(std::int64_t n, double seconds) {
+    force_evaluations_ += n;
+    force_seconds_ += seconds;
+  }
   std::vector<TermEnergy> breakdown(const Eigen::VectorXd& x);
   // -dE/dx of the contact terms alone (EnergyTerm::isContact), frozen coordinates
   // included: the forces walls and other bodies put on each point. Not counted as a
@@ -39,6 +66,8 @@ class ForceField final : public Objective {
   Eigen::VectorXd contactForces(const Eigen::VectorXd& x);
 
   std::int64_t forceEvaluations() const { return force_evaluations_; }
+  // Wall time spent in force evaluations by this process (not checkpointed: a clock).
+  double forceSeconds() const { return force_seconds_; }
   std::int64_t energyEvaluations() const { return energy_evaluations_; }
   void restoreCounters(std::int64_t force, std::int64_t energy) {
     force_evaluations_ = force;
@@ -47,9 +76,11 @@ class ForceField final : public Objective {
 
  private:
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
+  std::vector<EnergyTerm*> all_;  // the same, for evaluateTerms
   std::vector<char> frozen_;
   std::uint64_t version_ = 0;
   std::int64_t force_evaluations_ = 0, energy_evaluations_ = 0;
+  double force_seconds_ = 0.0;
 };
 
 }  // namespace cortex

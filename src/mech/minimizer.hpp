@@ -8,10 +8,13 @@
 
 namespace cortex {
 
-enum class MinimizerKind { kConjugateGradient, kLbfgs };
+// kAuto: each membrane by its shape relaxation (membrane/shape_relaxation.hpp), then the
+// filaments by conjugate gradients; kConjugateGradient, kLbfgs: everything at once over
+// all coordinates (membranes need penalty area and volume terms then).
+enum class MinimizerKind { kAuto, kConjugateGradient, kLbfgs };
 
 struct MinimizerSettings {
-  MinimizerKind kind = MinimizerKind::kConjugateGradient;
+  MinimizerKind kind = MinimizerKind::kAuto;
   double force_tolerance = 0.1;  // pN: converged when every |dE/dx_i| is below it
   long max_iterations = 100000;
   double max_step = 20.0;        // nm: largest move of any coordinate in one line search

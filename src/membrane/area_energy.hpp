@@ -14,6 +14,8 @@ class GlobalAreaEnergy final : public MembraneTerm {
     k_ = p_.modulus.at(t);
     a0_ = membrane_.targetArea(t);
   }
+  // d2E/dA2 = k / A0 (pN/nm^3): the stiffness of this penalty along the area gradient.
+  double stiffness() const { return k_ / a0_; }
 
  private:
   AreaParameters p_;

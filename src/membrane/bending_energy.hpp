@@ -14,6 +14,7 @@ class BendingEnergy final : public MembraneTerm {
     kappa_ = p_.modulus.at(t);
     h0_ = p_.spontaneous_curvature.at(t);
   }
+  double modulus() const { return kappa_; }  // κ now, pN·nm
 
  private:
   BendingParameters p_;

@@ -54,6 +54,13 @@ void Membrane::scatter(const double* x) {
 
 void Membrane::frozen(char* mask) const { std::copy(fixed_.begin(), fixed_.end(), mask); }
 
+double Membrane::targetVolume(double t) const {
+  const VolumeParameters& v = mechanics_.volume;
+  if (v.target_volume.isSet()) return v.target_volume.at(t);
+  if (v.reduced_volume.isSet()) return v.reduced_volume.at(t) * sphereVolumeOfArea(targetArea(t));
+  return material_.initial_volume;
+}
+
 MeshGeometry Membrane::currentGeometry() const {
   MeshGeometry g;
   g.compute(topology_, flatten(mesh_.positions()).data());

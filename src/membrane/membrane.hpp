@@ -3,6 +3,7 @@
 // state, and the geometry cache its energy terms share.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,7 +26,9 @@ struct BendingParameters {
   CurvatureEstimator estimator = CurvatureEstimator::kSigned;
 };
 
-enum class AreaModel { kGlobal, kPerVertex, kNone };
+// kExact: the total area is held at the target exactly (a constraint of the relaxation,
+// its multiplier the tension); kGlobal, kPerVertex: the penalty terms of area_energy.hpp.
+enum class AreaModel { kExact, kGlobal, kPerVertex, kNone };
 
 // Area elasticity (area_energy.hpp); its reference area is the membrane's target area.
 struct AreaParameters {
@@ -38,12 +41,15 @@ struct TensionParameters {
   Schedule tension{0.0};  // pN/nm
 };
 
-// Osmotic volume term (volume_energy.hpp); closed membranes only.
+// The enclosed volume (closed membranes only): held at its target exactly (a constraint
+// of the relaxation, its multiplier the pressure difference), or the osmotic penalty
+// term of volume_energy.hpp with a modulus.
 struct VolumeParameters {
-  Schedule modulus{0.0};  // pN/nm^2
+  bool exact = false;
+  Schedule modulus{0.0};  // pN/nm^2 (penalty)
   Schedule target_volume; // nm^3; default: reduced_volume, else the initial volume
   Schedule reduced_volume;
-  bool isSet() const { return !modulus.isZero() || target_volume.isSet() || reduced_volume.isSet(); }
+  bool isSet() const { return exact || !modulus.isZero() || target_volume.isSet() || reduced_volume.isSet(); }
 };
 
 // Mesh regularization (regularization_energy.hpp), a numerical term.
@@ -61,6 +67,15 @@ struct MembraneMechanics {
   // The membrane's amount of lipid, nm^2 (default: its initial area): the area terms'
   // reference and the area whose sphere the reduced volume refers to.
   Schedule target_area;
+};
+
+// What the latest relaxation found, beyond the shape: the Lagrange multipliers of exact
+// constraints as physical quantities (NaN without the constraint), and the strain the
+// shape accumulated since the mesh was last remeshed (the relaxation's remeshing policy).
+struct MembraneEquilibrium {
+  double tension = std::numeric_limits<double>::quiet_NaN();   // pN/nm, of the exact area
+  double pressure = std::numeric_limits<double>::quiet_NaN();  // pN/nm^2, p_in - p_out, of the exact volume
+  double strain_since_remesh = 0.0;
 };
 
 // Reference state fixed when the membrane is created (and restored from checkpoints).
@@ -97,6 +112,12 @@ class Membrane final : public Body {
   double targetArea(double t) const {
     return mechanics_.target_area.isSet() ? mechanics_.target_area.at(t) : material_.initial_area;
   }
+  // Target volume (nm^3) at time t: target_volume, else reduced_volume times the volume of
+  // the sphere of the target area, else the initial volume.
+  double targetVolume(double t) const;
+
+  const MembraneEquilibrium& equilibrium() const { return equilibrium_; }
+  void setEquilibrium(const MembraneEquilibrium& e) { equilibrium_ = e; }
 
   // Remeshes (remesh.hpp), carrying fixed flags and material areas along, and
   // accumulates the operation counts. Connectivity and vertex count change: the caller
@@ -122,6 +143,7 @@ class Membrane final : public Body {
   std::vector<char> fixed_;
   std::optional<RemeshSettings> remeshing_;
   RemeshStats remesh_totals_;
+  MembraneEquilibrium equilibrium_;
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;
   bool cache_valid_ = false;

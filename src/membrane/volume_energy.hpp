@@ -8,23 +8,19 @@ namespace cortex {
 class VolumeEnergy final : public MembraneTerm {
  public:
   VolumeEnergy(Membrane& m, VolumeParameters p) : MembraneTerm(m, "volume"), p_(std::move(p)) { setTime(0.0); }
+  // V0 = Membrane::targetVolume.
   double evaluate(const Evaluation& e) override {
     const MeshGeometry& g = membrane_.geometry(e);
     const double dv = g.volume - v0_;
     if (double* grad = gradientOf(e)) addScaledVertexField(grad, g.volume_gradient, k_ * dv / v0_);
     return 0.5 * k_ * dv * dv / v0_;
   }
-  // V0: target_volume, else reduced_volume times the volume of the sphere of the target
-  // area, else the initial volume.
   void setTime(double t) override {
     k_ = p_.modulus.at(t);
-    if (p_.target_volume.isSet())
-      v0_ = p_.target_volume.at(t);
-    else if (p_.reduced_volume.isSet())
-      v0_ = p_.reduced_volume.at(t) * sphereVolumeOfArea(membrane_.targetArea(t));
-    else
-      v0_ = membrane_.material().initial_volume;
+    v0_ = membrane_.targetVolume(t);
   }
+  // d2E/dV2 = k / V0 (pN/nm^5): the stiffness of this penalty along the volume gradient.
+  double stiffness() const { return k_ / v0_; }
 
  private:
   VolumeParameters p_;

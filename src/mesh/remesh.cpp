@@ -121,17 +121,35 @@ void compactAll(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payl
   for (std::vector<double>* e : payload.extensive) compact(*e, map);
 }
 
+void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
+  if (payload.extensive.empty()) return;
+  std::vector<double> area(m.numVertices(), 0.0);
+  const auto& p = m.positions();
+  for (Index f = 0; f < m.numFaces(); ++f) {
+    const Tri t = m.faceVertices(f);
+    const double third = faceNormal(p[t[0]], p[t[1]], p[t[2]]).norm() / 6.0;
+    for (Index v : t) area[v] += third;
+  }
+  const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
+  for (std::vector<double>* e : payload.extensive) {
+    const double total = std::accumulate(e->begin(), e->end(), 0.0);
+    for (Index v = 0; v < m.numVertices(); ++v) (*e)[v] = total * area[v] / total_area;
+  }
+}
+
+}  // namespace
+
 // Moves vertices towards the area-weighted centroid of their 1-ring, within the
 // tangent plane, where that does not fold a triangle. All targets are computed from the
 // old positions (Jacobi), so vertices are independent and the loop runs in parallel
 // with a result that does not depend on the thread count.
-Index relocate(SurfaceMesh& m, const VertexPayload& payload) {
+Index relocateTangentially(SurfaceMesh& m, const std::vector<char>* fixed) {
   const std::vector<Vec3> normals = vertexNormals(m);
   const auto& p = m.positions();
   std::vector<Vec3> moved = p;
   std::vector<char> did_move(m.numVertices(), 0);
   parallelFor(m.numVertices(), [&](Index v) {
-    if (m.isBoundaryVertex(v) || isFixed(payload, v)) return;
+    if (m.isBoundaryVertex(v) || (fixed && (*fixed)[v])) return;
     Vec3 centroid = Vec3::Zero();
     double weight = 0.0;
     for (const Index h : m.outgoingHalfedges(v)) {
@@ -152,24 +170,6 @@ Index relocate(SurfaceMesh& m, const VertexPayload& payload) {
   return static_cast<Index>(std::count(did_move.begin(), did_move.end(), 1));
 }
 
-void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
-  if (payload.extensive.empty()) return;
-  std::vector<double> area(m.numVertices(), 0.0);
-  const auto& p = m.positions();
-  for (Index f = 0; f < m.numFaces(); ++f) {
-    const Tri t = m.faceVertices(f);
-    const double third = faceNormal(p[t[0]], p[t[1]], p[t[2]]).norm() / 6.0;
-    for (Index v : t) area[v] += third;
-  }
-  const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
-  for (std::vector<double>* e : payload.extensive) {
-    const double total = std::accumulate(e->begin(), e->end(), 0.0);
-    for (Index v = 0; v < m.numVertices(); ++v) (*e)[v] = total * area[v] / total_area;
-  }
-}
-
-}  // namespace
-
 RemeshStats remesh(SurfaceMesh& m, VertexPayload& payload, const RemeshSettings& settings) {
   RemeshStats stats;
   // Sizing comes from the shape as the pass found it; splits and collapses carry it along.
@@ -179,7 +179,7 @@ RemeshStats remesh(SurfaceMesh& m, VertexPayload& payload, const RemeshSettings&
     const Index collapses = collapseShortEdges(m, target, payload);
     compactAll(m, target, payload);
     const Index flips = equalizeValences(m, true) + flipToDelaunay(m);
-    stats.relocations += relocate(m, payload);
+    stats.relocations += relocateTangentially(m, payload.fixed);
     stats.splits += splits, stats.collapses += collapses, stats.flips += flips;
     ++stats.sweeps;
     // Edges near the split/collapse thresholds keep a trickle of edits going; once they

@@ -35,4 +35,9 @@ struct RemeshStats {
 
 RemeshStats remesh(SurfaceMesh& mesh, VertexPayload& payload, const RemeshSettings& settings);
 
+// One Jacobi sweep moving every vertex (but boundary and `fixed` ones) towards the
+// area-weighted centroid of its 1-ring, within its tangent plane, where that folds no
+// triangle: evens out the mesh without changing the shape. Returns how many moved.
+Index relocateTangentially(SurfaceMesh& mesh, const std::vector<char>* fixed);
+
 }  // namespace cortex

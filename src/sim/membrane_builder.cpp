@@ -77,6 +77,7 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
   if (restored) {
     membrane->setMaterial(restored->material);
     membrane->setRemeshTotals(restored->remesh_totals);
+    membrane->setEquilibrium(restored->equilibrium);
   }
   if (c.remesh)
     membrane->setRemeshing(restored && restored->remeshing ? *restored->remeshing
@@ -91,6 +92,7 @@ MembraneState membraneState(const Membrane& m) {
   s.material = m.material();
   s.remesh_totals = m.remeshTotals();
   s.remeshing = m.remeshing();
+  s.equilibrium = m.equilibrium();
   return s;
 }
 

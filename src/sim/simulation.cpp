@@ -7,13 +7,21 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "membrane/shape_relaxation.hpp"
 #include "mesh/mesh_quality.hpp"
 
 namespace cortex {
 
 Simulation::Simulation(System& system, const SimulationConfig& simulation,
                        const MinimizerSettings& mechanics, RunObserver& observer)
-    : system_(system), sim_(simulation), mech_(mechanics), observer_(observer) {}
+    : system_(system), sim_(simulation), mech_(mechanics), observer_(observer) {
+  // Exact area and volume are constraints of the shape relaxation; the other minimizers
+  // would silently drop them.
+  if (mech_.kind != MinimizerKind::kAuto)
+    for (const auto& m : system_.membranes())
+      if (m->mechanics().area.model == AreaModel::kExact || m->mechanics().volume.exact)
+        throw InputError(fmt::format("membrane \"{}\": an exact area or volume needs minimizer = \"auto\"", m->name()));
+}
 
 std::int64_t Simulation::totalWindows() const {
   return static_cast<std::int64_t>(std::ceil(sim_.end_time / sim_.chemistry_window - 1e-9));
@@ -34,6 +42,9 @@ bool Simulation::crosses(double interval, std::int64_t k) const {
 // Below this angle a triangle has collapsed: its normal, curvature and forces are
 // meaningless, and continuing would only write nonsense.
 constexpr double kCollapsedAngleDeg = 0.1;
+// A relaxation ending with a force above this multiple of the tolerance did not find an
+// equilibrium: an error (exit 1). Below it, a warning counted in summary.json.
+constexpr double kFarFromTolerance = 100.0;
 
 void Simulation::checkMeshes() const {
   for (const auto& m : system_.membranes()) {
@@ -50,9 +61,14 @@ void Simulation::checkMeshes() const {
     if (q.min_angle_deg < kCollapsedAngleDeg)
       throw RunError(fmt::format(
           "membrane \"{}\": triangle {} collapsed (smallest angle {:.3g} deg) at t = {:.6g} s. "
-          "Drive the shape change more gently (smaller steps in the schedules), or raise "
-          "mesh_regularization",
+          "Drive the shape change more gently (smaller steps in the schedules)",
           m->name(), q.worst_face, q.min_angle_deg, system_.time()));
+    // Neighbouring triangles facing apart: the surface folded onto itself, and its
+    // curvature and energy mean nothing.
+    if (q.min_dihedral_cos < 0.0)
+      throw RunError(fmt::format("membrane \"{}\": folded at t = {:.6g} s (neighbouring triangles' normals at "
+                                 "cos {:.3f}); the relaxation did not find a smooth shape",
+                                 m->name(), system_.time(), q.min_dihedral_cos));
   }
 }
 
@@ -81,23 +97,93 @@ void Simulation::advanceChemistry(double t_end) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+MinimizationResult Simulation::relaxByBody() {
+  MinimizationResult r{true, 0, 0.0, 0.0, ""};
+  RunCounters& c = system_.counters;
+  ShapeRelaxationSettings settings{mech_.force_tolerance, mech_.max_iterations};
+  bool remeshed = false;
+  for (auto& m : system_.membranes()) {
+    const ShapeRelaxationReport rep = relaxMembraneShape(*m, system_.forceField(), system_.time(), settings);
+    c.remesh_seconds += rep.remesh_seconds;
+    c.mechanics_seconds -= rep.remesh_seconds;  // counted apart
+    c.preconditioner_seconds += rep.factor_seconds + rep.solve_seconds;
+    c.preconditioner_factorizations += rep.factorizations;
+    remeshed = remeshed || rep.remeshes > 0;
+    std::string held;
+    if (rep.area_held)
+      held += fmt::format("; area held (error {:.2g}), tension {:.6g} pN/nm", rep.area_error, m->equilibrium().tension);
+    if (rep.volume_held)
+      held += fmt::format("; volume held (error {:.2g}), pressure difference {:.6g} pN/nm^2", rep.volume_error,
+                          m->equilibrium().pressure);
+    spdlog::debug("t = {:.6g} s: membrane \"{}\" relaxed{} in {} outer steps, {} iterations, {} force evaluations, "
+                  "{} factorizations, {} remeshes, {} vertices; max normal force {:.3g} pN{}",
+                  system_.time(), m->name(), rep.converged ? "" : " (NOT converged: " + rep.stop_reason + ")",
+                  rep.outer, rep.iterations, rep.force_evaluations, rep.factorizations, rep.remeshes, rep.vertices,
+                  rep.max_normal_force, held);
+    r.iterations += rep.iterations;
+    r.energy += rep.energy;
+    if (rep.max_normal_force > r.max_force) r.max_force = rep.max_normal_force;
+    if (!rep.converged) {
+      r.converged = false;
+      r.stop_reason = fmt::format("membrane \"{}\": {}", m->name(), rep.stop_reason);
+    }
+    if (rep.max_normal_force > kFarFromTolerance * mech_.force_tolerance)
+      throw RunError(fmt::format("membrane \"{}\": the relaxation at t = {:.6g} s ended far from equilibrium "
+                                 "(largest normal force {:.3g} pN, over {:g} x force_tolerance = {:.3g} pN): {}",
+                                 m->name(), system_.time(), rep.max_normal_force, kFarFromTolerance,
+                                 kFarFromTolerance * mech_.force_tolerance, rep.stop_reason));
+  }
+  if (remeshed) system_.layOut();
+  if (const FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
+    ForceField::Part filaments(system_.forceField(), system_.forceField().termsOf(net->name()));
+    Eigen::VectorXd x = system_.coordinates();
+    const MinimizationResult f = minimize(filaments, x, mech_);
+    system_.setCoordinates(x);
+    r.iterations += f.iterations;
+    r.energy += f.energy;
+    r.max_force = std::max(r.max_force, f.max_force);
+    if (!f.converged) {
+      r.converged = false;
+      r.stop_reason = "filaments: " + f.stop_reason;
+    }
+  }
+  return r;
+}
+
+MinimizationResult Simulation::relaxAll() {
+  Eigen::VectorXd x = system_.coordinates();
+  const MinimizationResult r = minimize(system_.forceField(), x, mech_);
+  system_.setCoordinates(x);
+  return r;
+}
+
+void Simulation::checkRelaxation(const MinimizationResult& r) const {
+  if (r.max_force > kFarFromTolerance * mech_.force_tolerance)
+    throw RunError(fmt::format("the relaxation at t = {:.6g} s ended far from equilibrium (largest force {:.3g} pN, "
+                               "over {:g} x force_tolerance = {:.3g} pN): {}",
+                               system_.time(), r.max_force, kFarFromTolerance, kFarFromTolerance * mech_.force_tolerance,
+                               r.stop_reason));
+}
+
 MinimizationResult Simulation::relax() {
   // Chemistry may have grown, bound or branched filaments since the last relaxation.
   if (system_.filaments()) system_.layOut();
   MinimizationResult r{true, 0, 0.0, 0.0, "nothing to relax"};
   RunCounters& c = system_.counters;
+  const bool by_body = mech_.kind == MinimizerKind::kAuto;
   if (system_.hasMechanics()) {
     const auto start = std::chrono::steady_clock::now();
-    Eigen::VectorXd x = system_.coordinates();
-    r = minimize(system_.forceField(), x, mech_);
-    system_.setCoordinates(x);
+    const double force_seconds = system_.forceField().forceSeconds();
+    r = by_body ? relaxByBody() : relaxAll();
+    c.force_seconds += system_.forceField().forceSeconds() - force_seconds;
     ++c.minimizations;
     c.minimizer_iterations += r.iterations;
     c.last_max_force = r.max_force;
     c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  remeshMembranes();
+  if (!by_body) remeshMembranes();  // the shape relaxation remeshes within
   checkMeshes();
+  checkRelaxation(r);
   // Membranes and filaments moved: confinement, loads, tensions and binding partners
   // change the rates.
   const auto feedback_start = std::chrono::steady_clock::now();

@@ -34,7 +34,13 @@ class Simulation {
 
  private:
   MinimizationResult relax();
+  // kAuto: membranes one by one (normal displacements, exact constraints, remeshing
+  // within), then filaments; the rest: all coordinates at once.
+  MinimizationResult relaxByBody();
+  MinimizationResult relaxAll();
   void checkMeshes() const;
+  // A relaxation that ended far from the tolerance is an error, not a warning.
+  void checkRelaxation(const MinimizationResult& r) const;
   void remeshMembranes();
   void advanceChemistry(double t_end);
   bool crosses(double interval, std::int64_t k) const;

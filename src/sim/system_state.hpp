@@ -22,6 +22,9 @@ struct RunCounters {
   std::int64_t unconverged_minimizations = 0;
   double last_max_force = 0.0;  // pN, after the latest minimization
   double mechanics_seconds = 0.0;
+  double force_seconds = 0.0;           // of mechanics_seconds: force evaluations
+  double preconditioner_seconds = 0.0;  // of mechanics_seconds: factorizing and applying the Sobolev metric
+  std::int64_t preconditioner_factorizations = 0;
   double remesh_seconds = 0.0;
   double chemistry_seconds = 0.0;
   double feedback_seconds = 0.0;  // rates and confinement after each minimization (incl. binding-pair search)
@@ -34,6 +37,9 @@ struct RunCounters {
     f("unconverged_minimizations", c.unconverged_minimizations);
     f("last_max_force", c.last_max_force);
     f("mechanics_seconds", c.mechanics_seconds);
+    f("force_seconds", c.force_seconds);
+    f("preconditioner_seconds", c.preconditioner_seconds);
+    f("preconditioner_factorizations", c.preconditioner_factorizations);
     f("remesh_seconds", c.remesh_seconds);
     f("chemistry_seconds", c.chemistry_seconds);
     f("feedback_seconds", c.feedback_seconds);
@@ -50,10 +56,15 @@ struct MembraneState {
   // its original edge lengths, which remeshing changes).
   std::optional<RemeshSettings> remeshing;
 
+  MembraneEquilibrium equilibrium;
+
   template <class Self, class F>
   static void fields(Self& s, F&& f) {
     f("initial_area", s.material.initial_area);
     f("initial_volume", s.material.initial_volume);
+    f("tension", s.equilibrium.tension);
+    f("pressure", s.equilibrium.pressure);
+    f("strain_since_remesh", s.equilibrium.strain_since_remesh);
   }
 };
 

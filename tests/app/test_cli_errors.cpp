@@ -16,7 +16,7 @@ namespace {
 std::string configWith(const std::string& membrane, const std::string& before = "") {
   return before +
          "\n[simulation]\nseed = 1\nend_time = 0.0\n\n"
-         "[mechanics]\nminimizer = \"lbfgs\"\nforce_tolerance = 0.5\n\n"
+         "[mechanics]\nforce_tolerance = 0.5\n\n"
          "[[membrane]]\nname = \"vesicle\"\nshape = \"sphere\"\n" +
          membrane + "\n";
 }

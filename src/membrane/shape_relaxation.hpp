@@ -1,0 +1,66 @@
+// Relaxing a membrane to its minimum-energy shape: what every window does to every
+// membrane (thesis 2.2.2 energies; method after Surface Evolver and Mem3DG).
+//
+// Outer loop:
+//   1. vertex normals n_v (area-weighted) at the current positions x0;
+//   2. variables u_v, x_v = x0_v + u_v n_v: normal displacements only. A fluid membrane's
+//      energy does not change when vertices slide within the surface, so over all 3N
+//      coordinates a minimizer drifts along that null space until triangles collapse or
+//      fold; over normal displacements that space is gone;
+//   3. constrained, preconditioned L-BFGS over u (mech/constrained_lbfgs.hpp): exact total
+//      area and enclosed volume where the membrane asks for them (their Lagrange
+//      multipliers are the tension and the pressure difference), the six rigid-body modes
+//      fixed (exact null modes the discretization breaks at round-off level), and the
+//      Sobolev metric P = κ (L + εM) M⁻¹ (L + εM) (sobolev_preconditioner.hpp), in which
+//      the number of iterations does not grow with the mesh size;
+//   4. once some vertex has moved a strain |u_v| (2|H_v| + 1/R) of 0.5: tangential
+//      relocation, or the adaptive remesher when the shape changed a lot or an angle fell
+//      below 20°; back to 1.
+// Converged when the largest normal residual force |n_v · (∇E − λ_A ∇A − λ_V ∇V)| is below
+// the tolerance right after an outer step that moved no vertex by more than a strain of
+// 0.005. If the shape changed since the last remeshing (summed strain > 0.3, or an angle
+// below 25°), it is remeshed once more and relaxed again: the result is always relaxed on
+// its final mesh (a mesh left as the remesher made it carries curvature hot spots).
+// Targets the constraints cannot reach at once (a sphere asked for v < 1) are approached
+// in steps (continuation).
+#pragma once
+
+#include <string>
+
+#include "mech/force_field.hpp"
+#include "membrane/membrane.hpp"
+
+namespace cortex {
+
+struct ShapeRelaxationSettings {
+  double force_tolerance = 1e-3;  // pN, largest normal residual force on a vertex
+  long max_iterations = 20000;    // L-BFGS iterations over all outer steps
+};
+
+struct ShapeRelaxationReport {
+  bool converged = false;
+  std::string stop_reason;
+  int outer = 0;  // outer steps
+  long iterations = 0;
+  long force_evaluations = 0;
+  long constraint_evaluations = 0;
+  long preconditioner_solves = 0;
+  int factorizations = 0;
+  int remeshes = 0;
+  int continuation_steps = 0;  // times the targets had to be approached in steps
+  double seconds = 0.0, factor_seconds = 0.0, solve_seconds = 0.0, force_seconds = 0.0, remesh_seconds = 0.0;
+  double energy = 0.0;            // pN·nm, the membrane's terms
+  double max_normal_force = 0.0;  // pN, the converged quantity
+  double max_force = 0.0;         // pN, largest component of ∇E − λ·∇c, tangential included
+  bool area_held = false, volume_held = false;   // which constraints were exact
+  double area_error = 0.0, volume_error = 0.0;  // relative to the targets (held ones only)
+  Index vertices = 0;
+};
+
+// Relaxes membrane m under its terms in `field` (EnergyTerm::owner == m.name()) with the
+// parameters and targets of time t. Positions change in place and the mesh may be
+// remeshed (its vertex count changes: lay the System out again). Writes the multipliers
+// and the strain since the last remeshing into m.equilibrium().
+ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double t, const ShapeRelaxationSettings& s);
+
+}  // namespace cortex
