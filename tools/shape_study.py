@@ -5,7 +5,7 @@ Seifert-Berndl-Lipowsky (1991) branches: the table of docs/reduced_volume_study.
 Each case starts from a spheroid whose own reduced volume is the target + 0.03 (area
 4 pi (1000 nm)^2), relaxes it once (end_time = 0) at the target with the default
 settings (area and volume held exactly, adaptive remeshing, no numerical terms,
-force_tolerance 0.001 pN) at three mesh sizes, and reads summary.json.
+the default tolerance: the membrane's own force scale) at three mesh sizes, and reads summary.json.
 
 usage: shape_study.py CORTEX OUTROOT [--mesh 80,40,20] [--only prolate|oblate]
 prints one markdown table row per run, and writes OUTROOT/results.json
@@ -86,9 +86,6 @@ def run(cortex, root, kind, v, mesh):
     with open(config, "w") as f:
         f.write(f"""[simulation]
 end_time = 0.0
-
-[mechanics]
-force_tolerance = 0.001
 
 [[membrane]]
 name = "vesicle"

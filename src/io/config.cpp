@@ -34,6 +34,7 @@ MinimizerSettings readMechanics(const ConfigReader& r) {
   m.kind = kind == "lbfgs" ? MinimizerKind::kLbfgs
            : kind == "cg"  ? MinimizerKind::kConjugateGradient
                            : MinimizerKind::kAuto;
+  m.force_tolerance_given = r.has("force_tolerance");
   m.force_tolerance = r.number("force_tolerance", m.force_tolerance, Range::positive(), "pN");
   m.max_iterations = r.integer("max_iterations", m.max_iterations, 1, 1'000'000'000);
   m.max_step = r.number("max_step", m.max_step, Range::positive(), "nm");

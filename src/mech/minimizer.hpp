@@ -16,6 +16,9 @@ enum class MinimizerKind { kAuto, kConjugateGradient, kLbfgs };
 struct MinimizerSettings {
   MinimizerKind kind = MinimizerKind::kAuto;
   double force_tolerance = 0.1;  // pN: converged when every |dE/dx_i| is below it
+  // Whether the config gave force_tolerance: if not, membranes under kAuto converge on
+  // their own force scale instead (membrane/shape_relaxation.hpp).
+  bool force_tolerance_given = false;
   long max_iterations = 100000;
   double max_step = 20.0;        // nm: largest move of any coordinate in one line search
   int lbfgs_memory = 10;

@@ -33,6 +33,7 @@ constexpr long kMaxInnerIterations = 300;  // per outer step
 constexpr int kRefactorInterval = 10;      // outer steps between factorizations
 constexpr int kMemory = 10;                // L-BFGS pairs
 constexpr double kConstraintTolerance = 1e-10;  // relative
+constexpr double kLargestNaturalTolerance = 0.1;  // pN
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -240,10 +241,20 @@ Eigen::VectorXd strainScale(const MeshGeometry& g, double radius) {
 
 }  // namespace
 
+double naturalForceTolerance(const Membrane& m, double t) {
+  const MeshGeometry g = m.currentGeometry();
+  const double radius = std::sqrt(g.area / (4.0 * constants::kPi));
+  const double pressure = m.mechanics().bending.modulus.at(t) / (radius * radius * radius) +
+                          std::abs(m.mechanics().tension.tension.at(t)) / radius;
+  const double mean_vertex_area = g.area / static_cast<double>(m.mesh().numVertices());
+  return pressure > 0 ? std::min(kLargestNaturalTolerance, pressure * mean_vertex_area) : kLargestNaturalTolerance;
+}
+
 ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double t, const ShapeRelaxationSettings& s) {
   const auto start = Clock::now();
   const AtOffsetZero at_zero(m);
   ShapeRelaxationReport rep;
+  rep.force_tolerance = s.force_tolerance > 0 ? s.force_tolerance : naturalForceTolerance(m, t);
   const bool closed = m.isClosed();
   const bool exact_area = m.mechanics().area.model == AreaModel::kExact;
   // A reduced volume of 1 asks for the sphere, the largest volume the area allows (and
@@ -294,7 +305,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       precond.setLowRank(u.leftCols(k), w.head(k));
     }
     ConstrainedLbfgsSettings inner;
-    inner.tolerance = s.force_tolerance;
+    inner.tolerance = rep.force_tolerance;
     inner.max_iterations = std::min(iterations_left, kMaxInnerIterations);
     inner.memory = kMemory;
     inner.move_scale = strainScale(geo0, radius);

@@ -21,6 +21,14 @@ Simulation::Simulation(System& system, const SimulationConfig& simulation,
     for (const auto& m : system_.membranes())
       if (m->mechanics().area.model == AreaModel::kExact || m->mechanics().volume.exact)
         throw InputError(fmt::format("membrane \"{}\": an exact area or volume needs minimizer = \"auto\"", m->name()));
+  // A tolerance far above a membrane's own force scale stops its relaxation short of the
+  // minimum (naturalForceTolerance); said once, at the start.
+  if (mech_.kind == MinimizerKind::kAuto && mech_.force_tolerance_given)
+    for (const auto& m : system_.membranes())
+      if (const double own = naturalForceTolerance(*m, system_.time()); mech_.force_tolerance > 100.0 * own)
+        spdlog::warn("membrane \"{}\": force_tolerance = {:g} pN is {:.0f} x its own force scale ({:.2g} pN, the "
+                     "default when force_tolerance is not given): relaxations may stop well short of the minimum",
+                     m->name(), mech_.force_tolerance, mech_.force_tolerance / own, own);
 }
 
 std::int64_t Simulation::totalWindows() const {
@@ -100,7 +108,7 @@ void Simulation::advanceChemistry(double t_end) {
 MinimizationResult Simulation::relaxByBody() {
   MinimizationResult r{true, 0, 0.0, 0.0, ""};
   RunCounters& c = system_.counters;
-  ShapeRelaxationSettings settings{mech_.force_tolerance, mech_.max_iterations};
+  ShapeRelaxationSettings settings{mech_.force_tolerance_given ? mech_.force_tolerance : 0.0, mech_.max_iterations};
   bool remeshed = false;
   for (auto& m : system_.membranes()) {
     const ShapeRelaxationReport rep = relaxMembraneShape(*m, system_.forceField(), system_.time(), settings);
@@ -116,22 +124,23 @@ MinimizationResult Simulation::relaxByBody() {
       held += fmt::format("; volume held (error {:.2g}), pressure difference {:.6g} pN/nm^2", rep.volume_error,
                           m->equilibrium().pressure);
     spdlog::debug("t = {:.6g} s: membrane \"{}\" relaxed{} in {} outer steps, {} iterations, {} force evaluations, "
-                  "{} factorizations, {} remeshes, {} vertices; max normal force {:.3g} pN{}",
+                  "{} factorizations, {} remeshes, {} vertices; max normal force {:.3g} pN (tolerance {:.3g} pN){}",
                   system_.time(), m->name(), rep.converged ? "" : " (NOT converged: " + rep.stop_reason + ")",
                   rep.outer, rep.iterations, rep.force_evaluations, rep.factorizations, rep.remeshes, rep.vertices,
-                  rep.max_normal_force, held);
+                  rep.max_normal_force, rep.force_tolerance, held);
     r.iterations += rep.iterations;
     r.energy += rep.energy;
     if (rep.max_normal_force > r.max_force) r.max_force = rep.max_normal_force;
     if (!rep.converged) {
       r.converged = false;
-      r.stop_reason = fmt::format("membrane \"{}\": {}", m->name(), rep.stop_reason);
+      r.stop_reason = fmt::format("membrane \"{}\": {} (largest normal force {:.3g} pN, tolerance {:.3g} pN)",
+                                  m->name(), rep.stop_reason, rep.max_normal_force, rep.force_tolerance);
     }
-    if (rep.max_normal_force > kFarFromTolerance * mech_.force_tolerance)
+    if (rep.max_normal_force > kFarFromTolerance * rep.force_tolerance)
       throw RunError(fmt::format("membrane \"{}\": the relaxation at t = {:.6g} s ended far from equilibrium "
-                                 "(largest normal force {:.3g} pN, over {:g} x force_tolerance = {:.3g} pN): {}",
+                                 "(largest normal force {:.3g} pN, over {:g} x its force tolerance {:.3g} pN): {}",
                                  m->name(), system_.time(), rep.max_normal_force, kFarFromTolerance,
-                                 kFarFromTolerance * mech_.force_tolerance, rep.stop_reason));
+                                 rep.force_tolerance, rep.stop_reason));
   }
   if (remeshed) system_.layOut();
   if (const FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
@@ -144,7 +153,8 @@ MinimizationResult Simulation::relaxByBody() {
     r.max_force = std::max(r.max_force, f.max_force);
     if (!f.converged) {
       r.converged = false;
-      r.stop_reason = "filaments: " + f.stop_reason;
+      r.stop_reason = fmt::format("filaments: {} (max force {:.3g} pN, tolerance {:.3g} pN)", f.stop_reason,
+                                  f.max_force, mech_.force_tolerance);
     }
   }
   return r;
@@ -191,9 +201,11 @@ MinimizationResult Simulation::relax() {
   c.feedback_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - feedback_start).count();
   if (!r.converged) {
     ++c.unconverged_minimizations;
-    spdlog::warn("t = {:.6g} s: minimization stopped before convergence after {} iterations "
-                 "(max force {:.3g} pN > tolerance {:.3g} pN): {}",
-                 system_.time(), r.iterations, r.max_force, mech_.force_tolerance, r.stop_reason);
+    // Under "auto" each body's reason carries its own force and tolerance.
+    spdlog::warn("t = {:.6g} s: relaxation stopped before convergence after {} iterations: {}{}", system_.time(),
+                 r.iterations, r.stop_reason,
+                 by_body ? "" : fmt::format(" (max force {:.3g} pN > tolerance {:.3g} pN)", r.max_force,
+                                            mech_.force_tolerance));
   }
   return r;
 }
