@@ -2,6 +2,8 @@
 // (0 success, 1 failure during the run, 2 bad input, 3 stopped by a signal after a
 // checkpoint).
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -24,7 +26,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("config", config, "Config file (TOML)");
   run_cmd->add_option("--resume", run.resume_dir, "Continue the run in OUTDIR from its checkpoint.h5");
   run_cmd->add_option("-o,--output", run.output_dir, "Output folder (default: <config name>_out)");
-  run_cmd->add_option("--seed", run.seed, "Random seed (overrides simulation.seed)");
+  std::string seed;  // parsed below: CLI11 would clamp an out-of-range integer silently
+  run_cmd->add_option("--seed", seed, "Random seed (overrides simulation.seed)");
   run_cmd->add_option("--set", run.overrides, "Override a config key: key.path=value (repeatable)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::Range(1, 1024));
@@ -55,6 +58,15 @@ int main(int argc, char** argv) {
       return 2;
     }
     run.config = config;
+    if (!seed.empty()) {
+      std::int64_t value = -1;
+      const auto [end, error] = std::from_chars(seed.data(), seed.data() + seed.size(), value);
+      if (error != std::errc() || end != seed.data() + seed.size() || value < 0) {
+        std::cerr << "cortex: error: --seed: '" << seed << "' is not an integer in [0, 9223372036854775807]\n";
+        return 2;
+      }
+      run.seed = value;
+    }
     return cortex::runSimulation(run) == cortex::RunOutcome::kStopped ? 3 : 0;
   } catch (const cortex::InputError& e) {
     std::cerr << "cortex: error: " << e.what() << '\n';

@@ -223,15 +223,15 @@ RunOutcome runSimulation(const RunRequest& request) {
                                 kept, outdir.string())
         : resume ? "the snapshots and checkpoint it resumed from are kept"
                  : "no checkpoint was written";
-    spdlog::error("run failed at t = {:.6g} s ({} windows completed): {}; {}", system->time(), system->step, e.what(),
-                  status);
+    spdlog::error("run failed at t = {:.6g} s ({} window{} completed): {}; {}", system->time(), system->step,
+                  system->step == 1 ? "" : "s", e.what(), status);
     throw RunError(fmt::format("{} ({})", e.what(), status));
   }
   observer.finishProgress();
   if (outcome == RunOutcome::kStopped) {
-    spdlog::warn("stopped by signal {} at t = {:.6g} s ({} windows completed) after writing a checkpoint; continue with "
-                 "cortex run --resume {}",
-                 stop.signal(), system->time(), system->step, outdir.string());
+    spdlog::warn("stopped by signal {} at t = {:.6g} s ({} window{} completed) after writing a checkpoint; continue "
+                 "with cortex run --resume {}",
+                 stop.signal(), system->time(), system->step, system->step == 1 ? "" : "s", outdir.string());
     return outcome;
   }
 
