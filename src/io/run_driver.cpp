@@ -40,9 +40,10 @@ void setUpLogging(const std::filesystem::path& outdir, bool append) {
 
 // What a run writes into its folder: a fresh run refuses a folder holding any of them
 // (unless --overwrite, which removes exactly these).
-const char* const kRunFiles[] = {"summary.json", "checkpoint.h5", "trajectory.h5", "trajectory.xdmf", "cortex.log",
-                                 "snapshots", "summary.json.tmp", "checkpoint.h5.tmp", "trajectory.h5.tmp",
-                                 "trajectory.xdmf.tmp"};
+const char* const kRunFiles[] = {"summary.json",      "checkpoint.h5",     "trajectory.h5",   "trajectory.xdmf",
+                                 "observables.csv",   "cortex.log",        "snapshots",       "summary.json.tmp",
+                                 "checkpoint.h5.tmp", "trajectory.h5.tmp", "trajectory.xdmf.tmp",
+                                 "observables.csv.tmp"};
 
 void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
   std::error_code ec;
@@ -206,10 +207,11 @@ RunOutcome runSimulation(const RunRequest& request) {
     spdlog::info("membrane \"{}\": {} vertices, {} triangles, {}", m->name(), m->mesh().numVertices(),
                  m->mesh().numFaces(), m->isClosed() ? "closed" : "open (boundary fixed)");
 
-  TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume, header.run_id);
+  TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume, header.run_id, config.effective_toml);
   const bool live = !request.quiet && isatty(STDERR_FILENO);
   const StopSignals stop;
-  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live, &stop);
+  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live, &stop,
+                          {config.simulation.seed, request.threads, 0.0});
   Simulation simulation(*system, config.simulation, config.mechanics, observer);
   RunOutcome outcome;
   try {

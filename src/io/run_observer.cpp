@@ -5,6 +5,7 @@
 
 #include <cstdio>
 
+#include "io/observables.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "sim/frame_builder.hpp"
 
@@ -25,7 +26,7 @@ void logFilaments(const System& system) {
 
 OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader header,
                                TrajectoryWriter& writer, double end_time, bool live_progress,
-                               const StopSignals* stop)
+                               const StopSignals* stop, RunInfo run)
     : outdir_(std::move(outdir)),
       header_(std::move(header)),
       writer_(writer),
@@ -33,10 +34,15 @@ OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader he
       live_(live_progress),
       start_(std::chrono::steady_clock::now()),
       last_report_(start_),
-      stop_(stop) {}
+      stop_(stop),
+      run_(run) {}
 
-void OutputObserver::onSnapshot(const System& system) {
-  writer_.write(makeFrame(system));
+void OutputObserver::onSnapshot(System& system) {
+  Frame frame = makeFrame(system);
+  RunInfo now = run_;
+  now.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  frame.observables = observableRow(summarize(system, now));
+  writer_.write(frame);
   spdlog::debug("snapshot {} written at t = {:.6g} s", writer_.nextIndex() - 1, system.time());
   for (const auto& m : system.membranes()) {
     const MeshQuality q = measureQuality(m->mesh());

@@ -21,6 +21,19 @@ std::int64_t parseIndex(const std::string& name) {
 constexpr const char* kIndexName = "trajectory.h5";
 constexpr const char* kIndexFormat = "cortex trajectory 2";
 
+constexpr const char* kUnits =
+    "length nm, time s, force pN, energy pN nm, tension pN/nm, pressure pN/nm^2, concentration uM, diffusion nm^2/s";
+
+// The observables a snapshot file holds (none in files of runs without them).
+ObservableRow observablesOf(const h5::File& file) {
+  ObservableRow row;
+  if (!file.exists("/observables")) return row;
+  row.names = splitColumns(file.attributeString("/observables", "columns"));
+  row.values = file.readDoubles("/observables");
+  if (row.names.size() != row.values.size()) throw std::runtime_error("observables and their columns differ in count");
+  return row;
+}
+
 // The XDMF description of a snapshot file already written (for a resumed run).
 XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
   XdmfSnapshot snapshot{index, file.attributeDouble("/", "time"), {}, std::nullopt};
@@ -112,8 +125,11 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
 }  // namespace
 
 TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append,
-                                   std::string run_id)
-    : outdir_(std::move(outdir)), next_index_(first_index), run_id_(std::move(run_id)) {
+                                   std::string run_id, std::string config_toml)
+    : outdir_(std::move(outdir)),
+      next_index_(first_index),
+      run_id_(std::move(run_id)),
+      config_toml_(std::move(config_toml)) {
   const std::filesystem::path folder = outdir_ / "snapshots";
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
@@ -127,15 +143,24 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
       continue;
     }
     try {
-      snapshots_.push_back(describe(h5::File::openReadOnly(entry.path()), index));
+      const h5::File file = h5::File::openReadOnly(entry.path());
+      snapshots_.push_back(describe(file, index));
+      rows_.push_back(observablesOf(file));
     } catch (const std::runtime_error& e) {
       throw RunError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
                                  entry.path().string(), e.what()));
     }
   }
-  // The XDMF must list snapshots in time order.
-  std::sort(snapshots_.begin(), snapshots_.end(),
-            [](const XdmfSnapshot& a, const XdmfSnapshot& b) { return a.index < b.index; });
+  // The XDMF and the table list snapshots in time order (directory order is arbitrary).
+  std::vector<std::size_t> order(snapshots_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return snapshots_[a].index < snapshots_[b].index; });
+  std::vector<XdmfSnapshot> snapshots;
+  std::vector<ObservableRow> rows;
+  for (std::size_t i : order) snapshots.push_back(std::move(snapshots_[i])), rows.push_back(std::move(rows_[i]));
+  snapshots_.swap(snapshots);
+  rows_.swap(rows);
   writeIndex();
 }
 
@@ -152,10 +177,15 @@ void TrajectoryWriter::write(const Frame& frame) {
     for (const SpeciesField& field : frame.compartment_species)
       file.write("/compartments/species/" + field.name, field.copies, grid);
     if (frame.filaments) snapshot.filaments = writeFilaments(file, "", *frame.filaments);
+    if (!frame.observables.names.empty()) {
+      file.write("/observables", frame.observables.values);
+      file.setAttribute("/observables", "columns", joinColumns(frame.observables.names));
+    }
     bytes = file.image();
   }
   writeFileAtomically(path, bytes);
   snapshots_.push_back(std::move(snapshot));
+  rows_.push_back(frame.observables);
   ++next_index_;
   writeIndex();
 }
@@ -163,16 +193,26 @@ void TrajectoryWriter::write(const Frame& frame) {
 // The index first, then the XDMF: each is whole or absent, and both list only snapshot
 // files that are whole.
 void TrajectoryWriter::writeIndex() const {
-  std::string bytes;
+  std::string bytes, csv;
   {
     h5::File index = h5::File::createInMemory(outdir_ / kIndexName);
     index.setAttribute("/", "format", std::string(kIndexFormat));
     index.setAttribute("/", "run_id", run_id_);
+    index.setAttribute("/", "cortex_version", std::string(CORTEX_VERSION));
+    index.setAttribute("/", "units", std::string(kUnits));
+    index.setAttribute("/", "config", config_toml_);
     index.createGroups("/snapshots");
     for (const XdmfSnapshot& s : snapshots_) index.linkExternal(snapshotGroup(s.index), snapshotFile(s.index), "/");
+    const ObservableTable table = tabulate(rows_);
+    if (!table.columns.empty()) {
+      index.write("/observables", table.values, {table.rows, table.columns.size()});
+      index.setAttribute("/observables", "columns", joinColumns(table.columns));
+    }
+    csv = observablesCsv(table);
     bytes = index.image();
   }
   writeFileAtomically(outdir_ / kIndexName, bytes);
+  writeFileAtomically(outdir_ / "observables.csv", csv);
   writeFileAtomically(outdir_ / "trajectory.xdmf", trajectoryXdmf(snapshots_));
 }
 

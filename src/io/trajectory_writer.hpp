@@ -3,7 +3,9 @@
 // atomically; OUTDIR/trajectory.h5 is an index whose groups /snapshots/NNNNNN are
 // external links to those files (h5py and ParaView follow them; layout in
 // docs/output.md), rewritten atomically after each snapshot with trajectory.xdmf. A
-// snapshot appears in the index only once its file is whole.
+// snapshot appears in the index only once its file is whole. The index also holds the
+// observables of every snapshot as one table (/observables), written as observables.csv
+// too.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/observables.hpp"
 #include "io/xdmf.hpp"
 #include "sim/frame.hpp"
 
@@ -21,7 +24,9 @@ class TrajectoryWriter : public FrameWriter {
   // A fresh run (append = false) starts an empty trajectory. A resumed one keeps the
   // snapshot files numbered below first_index, deletes later ones and any temporary file
   // a crash left, and rebuilds the index. `run_id` is stored in the index.
-  TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append, std::string run_id);
+  // `config_toml`, the effective config, is stored in the index with the version and units.
+  TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append, std::string run_id,
+                   std::string config_toml);
 
   // Writes snapshot nextIndex(), then the index and the XDMF.
   void write(const Frame& frame) override;
@@ -33,8 +38,9 @@ class TrajectoryWriter : public FrameWriter {
 
   std::filesystem::path outdir_;
   std::int64_t next_index_;
-  std::string run_id_;
+  std::string run_id_, config_toml_;
   std::vector<XdmfSnapshot> snapshots_;  // what the index lists
+  std::vector<ObservableRow> rows_;      // their observables, in the same order
 };
 
 // The run id stored in OUTDIR/trajectory.h5; empty if it has none or cannot be read.

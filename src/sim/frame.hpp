@@ -44,9 +44,16 @@ struct SpeciesField {
   std::vector<std::int32_t> copies;
 };
 
+// Scalar observables of one snapshot, one named column each (io/observables.hpp).
+struct ObservableRow {
+  std::vector<std::string> names;
+  std::vector<double> values;
+};
+
 struct Frame {
   double time = 0.0;       // s
   std::int64_t step = 0;   // chemistry windows completed
+  ObservableRow observables;
   std::vector<MembraneFrame> membranes;
   std::array<std::int64_t, 3> grid_shape{0, 0, 0};
   std::vector<SpeciesField> compartment_species;

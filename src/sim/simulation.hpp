@@ -12,7 +12,8 @@ namespace cortex {
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
-  virtual void onSnapshot(const System&) {}
+  // Non-const: observables evaluate the energies (the force field counts its evaluations).
+  virtual void onSnapshot(System&) {}
   virtual void onCheckpoint(const System&) {}
   virtual void onWindow(const System&, const MinimizationResult&) {}
   // Asked after every window: true stops the run there, after a checkpoint (a signal).

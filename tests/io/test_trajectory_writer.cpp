@@ -88,7 +88,7 @@ void expectSnapshot(const h5::File& file, std::int64_t index, const Frame& frame
 }
 
 TEST_F(TrajectoryWriterTest, WritesEverySnapshotReadableBack) {
-  TrajectoryWriter writer(dir_, 0, false, "run");
+  TrajectoryWriter writer(dir_, 0, false, "run", "");
   for (int k = 0; k < 3; ++k) writer.write(makeFrame(k));
   EXPECT_EQ(writer.nextIndex(), 3);
 
@@ -99,7 +99,7 @@ TEST_F(TrajectoryWriterTest, WritesEverySnapshotReadableBack) {
 }
 
 TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
-  TrajectoryWriter writer(dir_, 0, false, "run");
+  TrajectoryWriter writer(dir_, 0, false, "run", "");
   for (int k = 0; k < 3; ++k) writer.write(makeFrame(k));
 
   const std::string xml = readXdmf();
@@ -132,13 +132,13 @@ TEST(Xdmf, EscapesNamesAndHandlesNoSnapshots) {
 
 TEST_F(TrajectoryWriterTest, AppendDropsSnapshotsFromFirstIndexAndContinues) {
   {
-    TrajectoryWriter writer(dir_, 0, false, "run");
+    TrajectoryWriter writer(dir_, 0, false, "run", "");
     for (int k = 0; k < 3; ++k) writer.write(makeFrame(k));
   }
   // What a crash can leave: a snapshot file not yet in the index, temporary files.
   fs::copy_file(dir_ / "snapshots/000002.h5", dir_ / "snapshots/000003.h5");
   std::ofstream(dir_ / "snapshots/000004.h5.tmp") << "torn";
-  TrajectoryWriter resumed(dir_, 2, true, "run");
+  TrajectoryWriter resumed(dir_, 2, true, "run", "");
   EXPECT_FALSE(fs::exists(dir_ / "snapshots/000003.h5"));
   EXPECT_FALSE(fs::exists(dir_ / "snapshots/000004.h5.tmp"));
   EXPECT_EQ(resumed.nextIndex(), 2);
@@ -170,7 +170,7 @@ TEST_F(TrajectoryWriterTest, MissingFilesAreInputErrors) {
 }
 
 TEST_F(TrajectoryWriterTest, InconsistentFrameIsRunError) {
-  TrajectoryWriter writer(dir_, 0, false, "run");
+  TrajectoryWriter writer(dir_, 0, false, "run", "");
   Frame frame = makeFrame(0);
   frame.membranes[0].mean_curvature.pop_back();
   EXPECT_THROW(writer.write(frame), RunError);

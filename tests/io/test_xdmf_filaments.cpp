@@ -63,7 +63,7 @@ TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {
   f.linker_types = {0};
   f.linker_tensions = {1.5};
   {
-    TrajectoryWriter writer(dir, 0, false, "run");
+    TrajectoryWriter writer(dir, 0, false, "run", "");
     writer.write(empty);
     writer.write(full);
   }
@@ -89,7 +89,7 @@ TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {
   }
   EXPECT_NE(before.find("Name=\"linkers\""), std::string::npos);
   {
-    TrajectoryWriter resumed(dir, 2, true, "run");  // keeps both snapshots, describes them from the file
+    TrajectoryWriter resumed(dir, 2, true, "run", "");  // keeps both snapshots, describes them from the file
   }
   std::ifstream in(dir / "trajectory.xdmf");
   std::stringstream after;
@@ -113,7 +113,7 @@ TEST(XdmfFilaments, InconsistentFrameIsRejected) {
   f.monomers = {1};
   f.cylinders = {0, 1};
   f.cylinder_filament = {0};
-  TrajectoryWriter writer(dir, 0, false, "run");
+  TrajectoryWriter writer(dir, 0, false, "run", "");
   EXPECT_THROW(writer.write(frame), std::exception);
   fs::remove_all(dir);
 }
