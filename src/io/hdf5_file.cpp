@@ -228,12 +228,13 @@ Shape File::shape(const std::string& path) const {
 }
 
 void File::setAttributeRaw(const std::string& objpath, const std::string& name, hid_t type,
-                           const void* value) {
+                           const void* value, hssize_t count) {
   const std::string what = fmt::format("set attribute '{}' on", name);
   const Handle object(H5Oopen(id_, objpath.c_str(), H5P_DEFAULT), H5Oclose);
   if (!object.valid()) fail(what, objpath);
   if (H5Aexists(object.get(), name.c_str()) > 0) H5Adelete(object.get(), name.c_str());
-  const Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  const hsize_t dims[1] = {static_cast<hsize_t>(count < 0 ? 0 : count)};
+  const Handle space(count < 0 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, dims, nullptr), H5Sclose);
   const Handle attr(
       H5Acreate2(object.get(), name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
       H5Aclose);
@@ -245,6 +246,10 @@ void File::setAttribute(const std::string& objpath, const std::string& name, dou
 }
 void File::setAttribute(const std::string& objpath, const std::string& name, std::int64_t value) {
   setAttributeRaw(objpath, name, H5T_NATIVE_INT64, &value);
+}
+void File::setAttribute(const std::string& objpath, const std::string& name,
+                        const std::vector<std::int64_t>& values) {
+  setAttributeRaw(objpath, name, H5T_NATIVE_INT64, values.data(), static_cast<hssize_t>(values.size()));
 }
 void File::setAttribute(const std::string& objpath, const std::string& name,
                         const std::string& value) {
@@ -263,6 +268,10 @@ void File::readAttributeRaw(const std::string& objpath, const std::string& name,
   const Handle space(H5Aget_space(attr.get()), H5Sclose);
   if (H5Sget_simple_extent_npoints(space.get()) != 1) fail(what, objpath);
   if (H5Aread(attr.get(), mem_type, value) < 0) fail(what, objpath);
+}
+
+bool File::attributeExists(const std::string& objpath, const std::string& name) const {
+  return exists(objpath) && H5Aexists_by_name(id_, objpath.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
 double File::attributeDouble(const std::string& objpath, const std::string& name) const {

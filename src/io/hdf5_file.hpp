@@ -59,6 +59,9 @@ class File {
   void setAttribute(const std::string& objpath, const std::string& name, double value);
   void setAttribute(const std::string& objpath, const std::string& name, std::int64_t value);
   void setAttribute(const std::string& objpath, const std::string& name, const std::string& value);
+  // A one-dimensional integer array attribute (e.g. a grid shape).
+  void setAttribute(const std::string& objpath, const std::string& name, const std::vector<std::int64_t>& values);
+  bool attributeExists(const std::string& objpath, const std::string& name) const;
   double attributeDouble(const std::string& objpath, const std::string& name) const;
   std::int64_t attributeInt64(const std::string& objpath, const std::string& name) const;
   std::string attributeString(const std::string& objpath, const std::string& name) const;
@@ -77,8 +80,9 @@ class File {
   void writeAs(const std::string& path, const std::vector<T>& data, Shape shape);
   template <class T>
   std::vector<T> readAs(const std::string& path, Shape* shape) const;
+  // `count` < 0 writes a scalar, otherwise a one-dimensional array of `count` values.
   void setAttributeRaw(const std::string& objpath, const std::string& name, hid_t type,
-                       const void* value);
+                       const void* value, hssize_t count = -1);
   void readAttributeRaw(const std::string& objpath, const std::string& name, hid_t mem_type,
                         void* value) const;
   [[noreturn]] void fail(const std::string& what, const std::string& objpath) const;

@@ -43,7 +43,7 @@ void setUpLogging(const std::filesystem::path& outdir, bool append) {
 const char* const kRunFiles[] = {"summary.json",      "checkpoint.h5",     "trajectory.h5",   "trajectory.xdmf",
                                  "observables.csv",   "cortex.log",        "snapshots",       "summary.json.tmp",
                                  "checkpoint.h5.tmp", "trajectory.h5.tmp", "trajectory.xdmf.tmp",
-                                 "observables.csv.tmp"};
+                                 "observables.csv.tmp", "compartments.h5",   "compartments.h5.tmp"};
 
 void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
   std::error_code ec;

@@ -34,14 +34,54 @@ ObservableRow observablesOf(const h5::File& file) {
   return row;
 }
 
+// Names joined by commas, as attributes store them (names hold no comma: config names are
+// validated).
+std::vector<std::string> splitNames(const h5::File& file, const std::string& object, const char* attribute) {
+  return file.attributeExists(object, attribute) ? splitColumns(file.attributeString(object, attribute))
+                                                 : std::vector<std::string>{};
+}
+
+// The compartment species of a snapshot file in the config's order (its attribute), not
+// HDF5's alphabetical one, so a resumed run describes them as the first run did.
+std::vector<std::string> speciesOf(const h5::File& file) {
+  return file.attributeExists("/compartments", "species") ? splitNames(file, "/compartments", "species")
+                                                          : file.children("/compartments/species");
+}
+
+// The names a snapshot file holds (for a resumed run's index).
+DatasetNames namesOf(const h5::File& file) {
+  DatasetNames names;
+  if (file.exists("/compartments/species")) {
+    names.species = speciesOf(file);
+    if (!names.species.empty()) {
+      for (const hsize_t n : file.shape("/compartments/species/" + names.species.front()))
+        names.compartment_shape.push_back(static_cast<std::int64_t>(n));
+    }
+    if (file.attributeExists("/compartments", "size")) names.compartment_size = file.attributeDouble("/compartments", "size");
+  }
+  names.filament_types = splitNames(file, "/filaments", "type_names");
+  names.linker_types = splitNames(file, "/filaments", "linker_type_names");
+  names.motor_types = splitNames(file, "/filaments", "motor_type_names");
+  return names;
+}
+
 // The XDMF description of a snapshot file already written (for a resumed run).
 XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
-  XdmfSnapshot snapshot{index, file.attributeDouble("/", "time"), {}, std::nullopt};
+  XdmfSnapshot snapshot{index, file.attributeDouble("/", "time"), {}, std::nullopt, std::nullopt};
   if (file.exists("/filaments")) {
     const auto rows = [&](const char* dataset) {
       return static_cast<std::int64_t>(file.shape(std::string("/filaments") + dataset).at(0));
     };
-    snapshot.filaments = XdmfFilaments{rows("/beads"), rows("/cylinders"), rows("/linkers"), rows("/motors")};
+    snapshot.filaments = XdmfFilaments{rows("/beads"), rows("/cylinders"), rows("/linkers"), rows("/motors"),
+                                       rows("/branch_points")};
+  }
+  if (file.exists("/compartments/species")) {
+    XdmfCompartments& c = snapshot.compartments.emplace();
+    c.species = speciesOf(file);
+    if (!c.species.empty()) {
+      const h5::Shape shape = file.shape("/compartments/species/" + c.species.front());
+      for (std::size_t a = 0; a < 3; ++a) c.shape[a] = static_cast<std::int64_t>(shape.at(a));
+    }
   }
   if (!file.exists("/membranes")) return snapshot;
   for (const std::string& name : file.children("/membranes")) {
@@ -102,6 +142,9 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
   }
   const std::string path = group + "/filaments/";
   file.write(path + "beads", f.beads, {k, 3});
+  file.setAttribute(group + "/filaments", "type_names", joinColumns(f.type_names));
+  file.setAttribute(group + "/filaments", "linker_type_names", joinColumns(f.linker_type_names));
+  file.setAttribute(group + "/filaments", "motor_type_names", joinColumns(f.motor_type_names));
   file.write(path + "offsets", f.offsets, {n + 1});
   file.write(path + "ids", f.ids, {n});
   file.write(path + "types", f.types, {n});
@@ -119,7 +162,7 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
   file.write(path + "motor_cells", pairCells(nm), {nm, 2});
   file.write(path + "branch_points", f.branch_points, {b, 3});
   return {static_cast<std::int64_t>(k), static_cast<std::int64_t>(m), static_cast<std::int64_t>(nl),
-          static_cast<std::int64_t>(nm)};
+          static_cast<std::int64_t>(nm), static_cast<std::int64_t>(b)};
 }
 
 }  // namespace
@@ -146,6 +189,7 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
       const h5::File file = h5::File::openReadOnly(entry.path());
       snapshots_.push_back(describe(file, index));
       rows_.push_back(observablesOf(file));
+      if (index == first_index - 1) names_ = namesOf(file);
     } catch (const std::runtime_error& e) {
       throw RunError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
                                  entry.path().string(), e.what()));
@@ -165,7 +209,7 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
 }
 
 void TrajectoryWriter::write(const Frame& frame) {
-  XdmfSnapshot snapshot{next_index_, frame.time, {}, std::nullopt};
+  XdmfSnapshot snapshot{next_index_, frame.time, {}, std::nullopt, std::nullopt};
   const std::filesystem::path path = outdir_ / snapshotFile(next_index_);
   std::string bytes;
   {
@@ -174,9 +218,27 @@ void TrajectoryWriter::write(const Frame& frame) {
     file.setAttribute("/", "step", frame.step);
     for (const MembraneFrame& membrane : frame.membranes) snapshot.membranes.push_back(writeMembrane(file, "", membrane));
     const h5::Shape grid(frame.grid_shape.begin(), frame.grid_shape.end());
-    for (const SpeciesField& field : frame.compartment_species)
-      file.write("/compartments/species/" + field.name, field.copies, grid);
-    if (frame.filaments) snapshot.filaments = writeFilaments(file, "", *frame.filaments);
+    DatasetNames names;
+    if (!frame.compartment_species.empty()) {
+      XdmfCompartments& c = snapshot.compartments.emplace();
+      c.shape = frame.grid_shape;
+      for (const SpeciesField& field : frame.compartment_species) {
+        file.write("/compartments/species/" + field.name, field.copies, grid);
+        c.species.push_back(field.name);
+      }
+      file.setAttribute("/compartments", "size", frame.grid_spacing);
+      file.setAttribute("/compartments", "species", joinColumns(c.species));
+      names.compartment_size = frame.grid_spacing;
+      names.compartment_shape.assign(frame.grid_shape.begin(), frame.grid_shape.end());
+      names.species = c.species;
+    }
+    if (frame.filaments) {
+      snapshot.filaments = writeFilaments(file, "", *frame.filaments);
+      names.filament_types = frame.filaments->type_names;
+      names.linker_types = frame.filaments->linker_type_names;
+      names.motor_types = frame.filaments->motor_type_names;
+    }
+    names_ = std::move(names);
     if (!frame.observables.names.empty()) {
       file.write("/observables", frame.observables.values);
       file.setAttribute("/observables", "columns", joinColumns(frame.observables.names));
@@ -184,6 +246,7 @@ void TrajectoryWriter::write(const Frame& frame) {
     bytes = file.image();
   }
   writeFileAtomically(path, bytes);
+  if (snapshot.compartments && !compartment_points_written_) writeCompartmentPoints(frame);
   snapshots_.push_back(std::move(snapshot));
   rows_.push_back(frame.observables);
   ++next_index_;
@@ -201,6 +264,16 @@ void TrajectoryWriter::writeIndex() const {
     index.setAttribute("/", "cortex_version", std::string(CORTEX_VERSION));
     index.setAttribute("/", "units", std::string(kUnits));
     index.setAttribute("/", "config", config_toml_);
+    if (!names_.compartment_shape.empty()) {
+      index.setAttribute("/", "compartment_size", names_.compartment_size);
+      index.setAttribute("/", "compartment_shape", names_.compartment_shape);
+      index.setAttribute("/", "species", joinColumns(names_.species));
+    }
+    if (!names_.filament_types.empty()) {
+      index.setAttribute("/", "filament_types", joinColumns(names_.filament_types));
+      index.setAttribute("/", "linker_types", joinColumns(names_.linker_types));
+      index.setAttribute("/", "motor_types", joinColumns(names_.motor_types));
+    }
     index.createGroups("/snapshots");
     for (const XdmfSnapshot& s : snapshots_) index.linkExternal(snapshotGroup(s.index), snapshotFile(s.index), "/");
     const ObservableTable table = tabulate(rows_);
@@ -214,6 +287,31 @@ void TrajectoryWriter::writeIndex() const {
   writeFileAtomically(outdir_ / kIndexName, bytes);
   writeFileAtomically(outdir_ / "observables.csv", csv);
   writeFileAtomically(outdir_ / "trajectory.xdmf", trajectoryXdmf(snapshots_));
+}
+
+// Corner (i, j, k) of the grid at (i, j, k) times the compartment size, in C order (k
+// fastest) like the species datasets; a structured grid over them has the compartments as
+// cells in the datasets' order.
+void TrajectoryWriter::writeCompartmentPoints(const Frame& frame) {
+  const auto [nx, ny, nz] = frame.grid_shape;
+  std::vector<double> points;
+  points.reserve(static_cast<std::size_t>(3 * (nx + 1) * (ny + 1) * (nz + 1)));
+  for (std::int64_t i = 0; i <= nx; ++i)
+    for (std::int64_t j = 0; j <= ny; ++j)
+      for (std::int64_t k = 0; k <= nz; ++k)
+        points.insert(points.end(), {static_cast<double>(i) * frame.grid_spacing, static_cast<double>(j) * frame.grid_spacing,
+                                     static_cast<double>(k) * frame.grid_spacing});
+  const std::filesystem::path path = outdir_ / kCompartmentPointsFile;
+  std::string bytes;
+  {
+    h5::File file = h5::File::createInMemory(path);
+    file.write("/points", points, {points.size() / 3, 3});
+    file.setAttribute("/", "size", frame.grid_spacing);
+    file.setAttribute("/", "shape", std::vector<std::int64_t>(frame.grid_shape.begin(), frame.grid_shape.end()));
+    bytes = file.image();
+  }
+  writeFileAtomically(path, bytes);
+  compartment_points_written_ = true;
 }
 
 std::string trajectoryRunId(const std::filesystem::path& outdir) {

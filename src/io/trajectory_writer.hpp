@@ -5,7 +5,9 @@
 // docs/output.md), rewritten atomically after each snapshot with trajectory.xdmf. A
 // snapshot appears in the index only once its file is whole. The index also holds the
 // observables of every snapshot as one table (/observables), written as observables.csv
-// too.
+// too, and what a reader needs to interpret the datasets (units, version, config, the
+// compartment grid, species and type names) as root attributes. The compartment grid's
+// corner points, which never move, are written once to OUTDIR/compartments.h5 for the XDMF.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,14 @@
 #include "sim/frame.hpp"
 
 namespace cortex {
+
+// What the index's root attributes say about the datasets, from the latest snapshot.
+struct DatasetNames {
+  double compartment_size = 0.0;                // nm; 0 without compartments
+  std::vector<std::int64_t> compartment_shape;  // empty without compartments
+  std::vector<std::string> species;             // compartment species
+  std::vector<std::string> filament_types, linker_types, motor_types;
+};
 
 class TrajectoryWriter : public FrameWriter {
  public:
@@ -35,12 +45,15 @@ class TrajectoryWriter : public FrameWriter {
 
  private:
   void writeIndex() const;
+  void writeCompartmentPoints(const Frame& frame);
 
   std::filesystem::path outdir_;
   std::int64_t next_index_;
   std::string run_id_, config_toml_;
   std::vector<XdmfSnapshot> snapshots_;  // what the index lists
   std::vector<ObservableRow> rows_;      // their observables, in the same order
+  DatasetNames names_;
+  bool compartment_points_written_ = false;
 };
 
 // The run id stored in OUTDIR/trajectory.h5; empty if it has none or cannot be read.

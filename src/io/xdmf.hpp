@@ -3,6 +3,7 @@
 // Pure text generation, kept apart from the writer so it can be tested without files.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +24,13 @@ struct XdmfFilaments {
   std::int64_t cylinders = 0;
   std::int64_t linkers = 0;
   std::int64_t motors = 0;
+  std::int64_t branch_points = 0;
+};
+
+// The compartment grid of a snapshot: its shape and the species stored per compartment.
+struct XdmfCompartments {
+  std::array<std::int64_t, 3> shape{0, 0, 0};
+  std::vector<std::string> species;
 };
 
 struct XdmfSnapshot {
@@ -30,6 +38,7 @@ struct XdmfSnapshot {
   double time = 0.0;       // s
   std::vector<XdmfMembrane> membranes;
   std::optional<XdmfFilaments> filaments;
+  std::optional<XdmfCompartments> compartments;
 };
 
 // "/snapshots/000042": where snapshot `index` appears in trajectory.h5.
@@ -37,9 +46,19 @@ std::string snapshotGroup(std::int64_t index);
 // "snapshots/000042.h5": the file holding snapshot `index`, relative to the output folder.
 std::string snapshotFile(std::int64_t index);
 
-// The whole .xdmf document: a temporal collection of per-snapshot spatial collections,
-// one triangle grid per membrane, and 2-node polyline grids for filament cylinders
-// ("filaments"), bound linkers ("linkers") and bound motors ("motors"). Data paths are
+// "compartments.h5": the corner points of the compartment grid, written once per run
+// (the grid does not move), relative to the output folder.
+inline constexpr const char* kCompartmentPointsFile = "compartments.h5";
+
+// The whole .xdmf document: one spatial collection holding one temporal collection per
+// object, named by it, so each
+// object keeps one name over all time steps (ParaView's "Xdmf Reader" shows one block per
+// object; a reader would rename a name repeated inside one collection). Objects: one
+// triangle grid per membrane (its name), 2-node polyline grids for filament cylinders
+// ("filaments"), bound linkers ("linkers") and bound motors ("motors"), points for branch
+// points ("branch_points"), and a structured grid whose cells are the compartments with
+// one cell field per species ("compartments"). A time step where an object has no
+// elements is left out of its collection (ParaView shows nothing there). Data paths are
 // relative to the output folder, so the folder can be moved.
 std::string trajectoryXdmf(const std::vector<XdmfSnapshot>& snapshots);
 

@@ -36,6 +36,8 @@ struct FilamentFrame {
   std::vector<std::int32_t> motor_types;       // n
   std::vector<double> motor_tensions;          // n, pN
   std::vector<double> branch_points;           // b*3, nm: each daughter's first bead
+  // Names of the type indices above: filament, linker and motor types.
+  std::vector<std::string> type_names, linker_type_names, motor_type_names;
 };
 
 // Copies of one 3D species per compartment, laid out as an (nx, ny, nz) C-order array.
@@ -56,6 +58,7 @@ struct Frame {
   ObservableRow observables;
   std::vector<MembraneFrame> membranes;
   std::array<std::int64_t, 3> grid_shape{0, 0, 0};
+  double grid_spacing = 0.0;  // nm, the compartments' edge; the grid starts at the origin
   std::vector<SpeciesField> compartment_species;
   std::optional<FilamentFrame> filaments;  // set when the run has a filament network
 };

@@ -36,6 +36,9 @@ FilamentFrame filamentFrame(const FilamentNetwork& net) {
   appendBindings(net, BinderKind::kLinker, ff.linkers, ff.linker_types, ff.linker_tensions);
   appendBindings(net, BinderKind::kMotor, ff.motors, ff.motor_types, ff.motor_tensions);
   for (const Branch& b : net.branches()) appendPoint(ff.branch_points, filaments[b.daughter].beads.front());
+  for (const FilamentType& t : net.config().types) ff.type_names.push_back(t.name);
+  for (const LinkerType& t : net.config().linkers) ff.linker_type_names.push_back(t.name);
+  for (const MotorType& t : net.config().motors) ff.motor_type_names.push_back(t.name);
   return ff;
 }
 
@@ -56,6 +59,7 @@ Frame makeFrame(const System& system) {
   if (const ChemistryEngine* chem = system.chemistry()) {
     const CompartmentGrid& g = system.grid();
     frame.grid_shape = {g.shape[0], g.shape[1], g.shape[2]};
+    frame.grid_spacing = g.size;
     for (Index s = 0; s < static_cast<Index>(system.chemistryModel().species.size()); ++s) {
       SpeciesField field{system.chemistryModel().species[s].name, {}};
       field.copies.reserve(g.count());

@@ -104,7 +104,7 @@ TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
 
   const std::string xml = readXdmf();
   EXPECT_NE(xml.find("<Xdmf Version=\"2.0\">"), std::string::npos);
-  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 3 * 3);  // the series, 3 snapshots, 2 membranes each
+  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 2 + 2 * 3);  // the run, a series per membrane, 3 snapshots each
   EXPECT_EQ(countOf(xml, "<Grid "), countOf(xml, "</Grid>"));
   for (int k = 0; k < 3; ++k) {
     const Frame frame = makeFrame(k);
@@ -124,7 +124,7 @@ TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
 }
 
 TEST(Xdmf, EscapesNamesAndHandlesNoSnapshots) {
-  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}, std::nullopt}});
+  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}, std::nullopt, std::nullopt}});
   EXPECT_NE(xml.find("Name=\"a&amp;b\""), std::string::npos);
   EXPECT_NE(xml.find(">snapshots/000007.h5:/membranes/a&amp;b/mean_curvature<"), std::string::npos);
   EXPECT_EQ(countOf(trajectoryXdmf({}), "<Grid "), 1);
@@ -158,7 +158,7 @@ TEST_F(TrajectoryWriterTest, AppendDropsSnapshotsFromFirstIndexAndContinues) {
 
   // The rebuilt XDMF still describes the retained snapshots with their own sizes.
   const std::string xml = readXdmf();
-  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 3 * 3);
+  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 2 + 2 * 3);
   EXPECT_NE(xml.find("Dimensions=\"5 3\">snapshots/000001.h5:/membranes/cell/vertices<"), std::string::npos);
   EXPECT_NE(xml.find("Dimensions=\"9 3\">snapshots/000002.h5:/membranes/cell/vertices<"), std::string::npos);
   EXPECT_EQ(trajectoryRunId(dir_), "run");

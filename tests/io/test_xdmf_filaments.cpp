@@ -25,8 +25,9 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 }
 
 TEST(XdmfFilaments, GridsWithElementsOnly) {
-  XdmfSnapshot s{3, 0.5, {}, XdmfFilaments{12, 9, 0, 4}};
+  XdmfSnapshot s{3, 0.5, {}, XdmfFilaments{12, 9, 0, 4, 0}, std::nullopt};
   const std::string xml = trajectoryXdmf({s});
+  EXPECT_NE(xml.find(R"(<Grid Name="filaments" GridType="Collection" CollectionType="Temporal">)"), std::string::npos);
   EXPECT_NE(xml.find(R"(<Grid Name="filaments" GridType="Uniform">)"), std::string::npos);
   EXPECT_NE(xml.find(R"(NodesPerElement="2" NumberOfElements="9")"), std::string::npos);
   EXPECT_NE(xml.find(R"(Dimensions="9 2">snapshots/000003.h5:/filaments/cylinders<)"), std::string::npos);
@@ -36,9 +37,11 @@ TEST(XdmfFilaments, GridsWithElementsOnly) {
   EXPECT_NE(xml.find(R"(Dimensions="8 3">snapshots/000003.h5:/filaments/motors<)"), std::string::npos);
   EXPECT_NE(xml.find(R"(Dimensions="4 2">snapshots/000003.h5:/filaments/motor_cells<)"), std::string::npos);
 
-  const std::string empty = trajectoryXdmf({XdmfSnapshot{0, 0.0, {}, XdmfFilaments{}}});
+  EXPECT_EQ(xml.find("branch_points"), std::string::npos);
+
+  const std::string empty = trajectoryXdmf({XdmfSnapshot{0, 0.0, {}, XdmfFilaments{}, std::nullopt}});
   EXPECT_EQ(empty.find("filaments/"), std::string::npos);
-  EXPECT_EQ(occurrences(empty, "<Grid "), 2u);  // the temporal and the one spatial collection
+  EXPECT_EQ(occurrences(empty, "<Grid "), 1u);  // the run's collection: no object has elements
 }
 
 TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {
