@@ -31,7 +31,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "Override a config key: key.path=value (repeatable)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (results do not depend on it)")
       ->check(CLI::Range(1, 1024));
-  run_cmd->add_flag("-q,--quiet", run.quiet, "No progress line on the terminal");
+  run_cmd->add_flag("-q,--quiet", run.quiet, "No progress on stderr (the log still has it)");
+  run_cmd->add_option("--progress", run.progress_interval,
+                      "Seconds between progress lines when stderr is not a terminal (a batch job); 0: none")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag("--overwrite", run.overwrite, "Replace the results of an earlier run in the output folder");
 
   std::vector<std::string> check_overrides;

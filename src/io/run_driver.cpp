@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 
 #include <regex>
 
@@ -17,6 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
+#include "io/progress_reporter.hpp"
 #include "io/run_observer.hpp"
 #include "io/stop_signals.hpp"
 #include "io/summary.hpp"
@@ -209,15 +211,16 @@ RunOutcome runSimulation(const RunRequest& request) {
 
   TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume, header.run_id, config.effective_toml);
   const bool live = !request.quiet && isatty(STDERR_FILENO);
+  ProgressReporter progress(config.simulation.end_time, live, request.quiet ? 0.0 : request.progress_interval);
   const StopSignals stop;
-  OutputObserver observer(outdir, header, writer, config.simulation.end_time, live, &stop,
+  OutputObserver observer(outdir, header, writer, progress, &stop,
                           {config.simulation.seed, request.threads, 0.0});
   Simulation simulation(*system, config.simulation, config.mechanics, observer);
   RunOutcome outcome;
   try {
     outcome = simulation.run(!resume);
   } catch (const RunError& e) {
-    observer.finishProgress();
+    progress.finish();
     const double kept = observer.lastCheckpointTime();
     const std::string status =
         kept >= 0 ? fmt::format("the snapshots so far and the checkpoint of t = {:.6g} s are kept; fix the cause and "
@@ -229,7 +232,7 @@ RunOutcome runSimulation(const RunRequest& request) {
                   system->step == 1 ? "" : "s", e.what(), status);
     throw RunError(fmt::format("{} ({})", e.what(), status));
   }
-  observer.finishProgress();
+  progress.finish();
   if (outcome == RunOutcome::kStopped) {
     spdlog::warn("stopped by signal {} at t = {:.6g} s ({} window{} completed) after writing a checkpoint; continue "
                  "with cortex run --resume {}",
@@ -242,6 +245,11 @@ RunOutcome runSimulation(const RunRequest& request) {
                       summarize(*system, {config.simulation.seed, request.threads, wall}));
   logThroughput(*system, wall);
   spdlog::info("finished at t = {:.6g} s in {:.2f} s wall; output in {}", system->time(), wall, outdir.string());
+  // The one line a batch job's output always ends with: where the results are.
+  fmt::print("cortex: finished t = {:.6g} s in {:.1f} s wall; results in {} (summary.json, observables.csv, "
+             "trajectory.xdmf for ParaView)\n",
+             system->time(), wall, outdir.string());
+  std::fflush(stdout);
   return outcome;
 }
 

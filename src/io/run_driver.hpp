@@ -18,7 +18,8 @@ struct RunRequest {
   std::vector<std::string> overrides;  // --set key.path=value
   std::optional<std::int64_t> seed;    // --seed
   int threads = 1;
-  bool quiet = false;                  // no progress line on the terminal
+  bool quiet = false;                  // no progress on stderr
+  double progress_interval = 30.0;     // s between progress lines when stderr is not a terminal; 0: none
   bool overwrite = false;              // a fresh run may replace an earlier run's results
 };
 

@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <cstdio>
-
 #include "io/observables.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "sim/frame_builder.hpp"
@@ -25,15 +23,13 @@ void logFilaments(const System& system) {
 }  // namespace
 
 OutputObserver::OutputObserver(std::filesystem::path outdir, CheckpointHeader header,
-                               TrajectoryWriter& writer, double end_time, bool live_progress,
-                               const StopSignals* stop, RunInfo run)
+                               TrajectoryWriter& writer, ProgressReporter& progress, const StopSignals* stop,
+                               RunInfo run)
     : outdir_(std::move(outdir)),
       header_(std::move(header)),
       writer_(writer),
-      end_time_(end_time),
-      live_(live_progress),
+      progress_(progress),
       start_(std::chrono::steady_clock::now()),
-      last_report_(start_),
       stop_(stop),
       run_(run) {}
 
@@ -62,38 +58,11 @@ void OutputObserver::onCheckpoint(const System& system) {
 }
 
 void OutputObserver::onWindow(const System& system, const MinimizationResult& result) {
-  const auto now = std::chrono::steady_clock::now();
-  if (start_sim_time_ < 0) start_sim_time_ = system.time();
-  const double wall = std::chrono::duration<double>(now - start_).count();
-  const bool done = system.time() >= end_time_;
-  const double since = std::chrono::duration<double>(now - last_report_).count();
-  // Terminal: refreshed twice a second; log file: a line every 30 s and at the end.
-  if (!done && since < (live_ ? 0.5 : 30.0)) return;
-  last_report_ = now;
-  const double progressed = system.time() - start_sim_time_;
-  const double eta = progressed > 0 ? wall * (end_time_ - system.time()) / progressed : 0.0;
-  const double evals_per_s = system.counters.mechanics_seconds > 0
-                                 ? system.forceField().forceEvaluations() /
-                                       system.counters.mechanics_seconds
-                                 : 0.0;
-  std::string line = fmt::format("t = {:.4g} / {:.4g} s | wall {:.1f} s | ETA {:.0f} s", system.time(), end_time_,
-                                 wall, eta);
-  if (!system.membranes().empty())
-    line += fmt::format(" | {} iterations, max force {:.3g} pN | {:.0f} force evaluations/s", result.iterations,
-                        result.max_force, evals_per_s);
-  if (const ChemistryEngine* chem = system.chemistry())
-    line += fmt::format(" | {} events, {:.3g} events/s", chem->events(),
-                        system.counters.chemistry_seconds > 0 ? chem->events() / system.counters.chemistry_seconds : 0.0);
-  if (live_) {
-    std::fprintf(stderr, "\r%-120s", line.c_str());
-    std::fflush(stderr);
-  } else {
-    spdlog::info("{}", line);
-  }
+  progress_.window(system, result);
 }
 
-void OutputObserver::finishProgress() {
-  if (live_) std::fprintf(stderr, "\n");
+void OutputObserver::onRelaxing(const System& system, const std::string& what, const MinimizerProgress& p) {
+  progress_.relaxing(system, what, p);
 }
 
 }  // namespace cortex

@@ -22,6 +22,7 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
       r.converged = true;
       break;
     }
+    if (s.progress) s.progress({r.iterations, r.max_force, s.force_tolerance});
     double slope = g.dot(d);
     if (slope >= 0.0) {
       d = -g;

@@ -45,6 +45,7 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
       r.converged = true;
       break;
     }
+    if (s.progress) s.progress({r.iterations, r.max_force, s.force_tolerance});
     Eigen::VectorXd d = twoLoopDirection(g, pairs);
     double slope = g.dot(d);
     if (slope >= 0.0) {  // memory lost positive definiteness: start over

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 #include "mech/objective.hpp"
@@ -13,6 +14,15 @@ namespace cortex {
 // all coordinates (membranes need penalty area and volume terms then).
 enum class MinimizerKind { kAuto, kConjugateGradient, kLbfgs };
 
+// Where a minimization stands, for progress reports during long relaxations.
+struct MinimizerProgress {
+  long iterations = 0;
+  double max_force = 0.0;  // pN, the converged quantity
+  double tolerance = 0.0;  // pN
+};
+// Called once per iteration (or outer step); must be cheap: the caller throttles output.
+using MinimizerProgressCallback = std::function<void(const MinimizerProgress&)>;
+
 struct MinimizerSettings {
   MinimizerKind kind = MinimizerKind::kAuto;
   double force_tolerance = 0.1;  // pN: converged when every |dE/dx_i| is below it
@@ -22,6 +32,7 @@ struct MinimizerSettings {
   long max_iterations = 100000;
   double max_step = 20.0;        // nm: largest move of any coordinate in one line search
   int lbfgs_memory = 10;
+  MinimizerProgressCallback progress;  // optional
 };
 
 struct MinimizationResult {

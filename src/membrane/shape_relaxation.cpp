@@ -350,6 +350,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
                   "moved {:.3g} (strain), max normal force {:.3g} pN, energy {:.10g} pN nm ({})",
                   m.name(), rep.outer, n, last.iterations, last.evaluations, moved, last.max_residual, last.value,
                   last.converged ? "converged" : last.stop_reason);
+    if (s.progress) s.progress({rep.iterations, last.max_residual, rep.force_tolerance});
     if (!at_targets && (last.converged || last.refresh || last.iterations >= 30)) continue;  // the next target
     if (last.converged && moved <= kSettledStrain) {
       if (can_remesh && !final_remesh_done &&

@@ -28,6 +28,7 @@
 #include <string>
 
 #include "mech/force_field.hpp"
+#include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
 
 namespace cortex {
@@ -35,6 +36,7 @@ namespace cortex {
 struct ShapeRelaxationSettings {
   double force_tolerance = 0.0;  // pN, largest normal residual force on a vertex; 0: naturalForceTolerance
   long max_iterations = 20000;   // L-BFGS iterations over all outer steps
+  MinimizerProgressCallback progress;  // optional, after every outer step
 };
 
 // The membrane's own force scale at time t, the tolerance when none is given: the force

@@ -105,12 +105,17 @@ void Simulation::advanceChemistry(double t_end) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+MinimizerProgressCallback Simulation::progressOf(std::string what) {
+  return [this, what = std::move(what)](const MinimizerProgress& p) { observer_.onRelaxing(system_, what, p); };
+}
+
 MinimizationResult Simulation::relaxByBody() {
   MinimizationResult r{true, 0, 0.0, 0.0, ""};
   RunCounters& c = system_.counters;
-  ShapeRelaxationSettings settings{mech_.force_tolerance_given ? mech_.force_tolerance : 0.0, mech_.max_iterations};
+  ShapeRelaxationSettings settings{mech_.force_tolerance_given ? mech_.force_tolerance : 0.0, mech_.max_iterations, {}};
   bool remeshed = false;
   for (auto& m : system_.membranes()) {
+    settings.progress = progressOf(m->name());
     const ShapeRelaxationReport rep = relaxMembraneShape(*m, system_.forceField(), system_.time(), settings);
     c.remesh_seconds += rep.remesh_seconds;
     c.mechanics_seconds -= rep.remesh_seconds;  // counted apart
@@ -146,7 +151,9 @@ MinimizationResult Simulation::relaxByBody() {
   if (const FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
     ForceField::Part filaments(system_.forceField(), system_.forceField().termsOf(net->name()));
     Eigen::VectorXd x = system_.coordinates();
-    const MinimizationResult f = minimize(filaments, x, mech_);
+    MinimizerSettings filament_settings = mech_;
+    filament_settings.progress = progressOf("filaments");
+    const MinimizationResult f = minimize(filaments, x, filament_settings);
     system_.setCoordinates(x);
     r.iterations += f.iterations;
     r.energy += f.energy;
@@ -162,7 +169,9 @@ MinimizationResult Simulation::relaxByBody() {
 
 MinimizationResult Simulation::relaxAll() {
   Eigen::VectorXd x = system_.coordinates();
-  const MinimizationResult r = minimize(system_.forceField(), x, mech_);
+  MinimizerSettings settings = mech_;
+  settings.progress = progressOf("system");
+  const MinimizationResult r = minimize(system_.forceField(), x, settings);
   system_.setCoordinates(x);
   return r;
 }

@@ -16,6 +16,9 @@ class RunObserver {
   virtual void onSnapshot(System&) {}
   virtual void onCheckpoint(const System&) {}
   virtual void onWindow(const System&, const MinimizationResult&) {}
+  // During a relaxation of `what` (a membrane's name, "filaments" or "system"): called
+  // every iteration or outer step, so long minimizations can show progress.
+  virtual void onRelaxing(const System&, const std::string& /*what*/, const MinimizerProgress&) {}
   // Asked after every window: true stops the run there, after a checkpoint (a signal).
   virtual bool stopRequested() const { return false; }
 };
@@ -45,6 +48,8 @@ class Simulation {
   void remeshMembranes();
   void advanceChemistry(double t_end);
   bool crosses(double interval, std::int64_t k) const;
+  // Reports the relaxation of `what` to the observer.
+  MinimizerProgressCallback progressOf(std::string what);
 
   System& system_;
   SimulationConfig sim_;

@@ -1,0 +1,112 @@
+#include "io/progress_reporter.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+namespace cortex {
+namespace {
+
+constexpr double kLiveInterval = 0.5;  // s between terminal refreshes
+constexpr double kLogInterval = 30.0;  // s between log lines
+
+std::string duration(double seconds) {
+  if (seconds < 0) return "?";
+  if (seconds < 120) return fmt::format("{:.0f} s", seconds);
+  if (seconds < 7200) return fmt::format("{:.0f} min", seconds / 60);
+  return fmt::format("{:.1f} h", seconds / 3600);
+}
+
+// "mechanics 64% (12,345 force evaluations, 210/s)": the share of wall time and throughput.
+std::string throughput(const System& system, double wall) {
+  const RunCounters& c = system.counters;
+  std::string text;
+  const std::int64_t evaluations = system.forceField().forceEvaluations();
+  if (system.hasMechanics() && evaluations > 0)
+    text += fmt::format(" | mechanics {:.0f}% ({} force evaluations, {:.3g}/s)", 100 * c.mechanics_seconds / wall,
+                        evaluations, c.mechanics_seconds > 0 ? evaluations / c.mechanics_seconds : 0.0);
+  if (const ChemistryEngine* chem = system.chemistry())
+    text += fmt::format(" | chemistry {:.0f}% ({} events, {:.3g} events/s)", 100 * c.chemistry_seconds / wall,
+                        chem->events(), c.chemistry_seconds > 0 ? chem->events() / c.chemistry_seconds : 0.0);
+  return text;
+}
+
+}  // namespace
+
+void RecentPace::add(double wall, double sim_time) {
+  samples_.emplace_back(wall, sim_time);
+  // Keep one sample older than the span, so the pace always spans at least `span_`.
+  while (samples_.size() > 2 && samples_[1].first < wall - span_) samples_.pop_front();
+}
+
+double RecentPace::secondsFor(double remaining) const {
+  if (samples_.size() < 2) return -1.0;
+  const double wall = samples_.back().first - samples_.front().first;
+  const double sim = samples_.back().second - samples_.front().second;
+  return sim > 0 ? remaining * wall / sim : -1.0;
+}
+
+ProgressReporter::ProgressReporter(double end_time, bool live, double interval)
+    : end_time_(end_time), live_(live), interval_(interval), start_(std::chrono::steady_clock::now()) {}
+
+double ProgressReporter::wallSeconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool ProgressReporter::due(double wall, double last, double interval, bool relaxing) const {
+  // A relaxation is reported only once it has run a whole interval without a window ending.
+  return wall - last >= interval && (!relaxing || wall - last_window_ >= interval);
+}
+
+void ProgressReporter::show(const std::string& line, bool now, bool relaxing) {
+  const double wall = wallSeconds();
+  if (live_ && (now || due(wall, last_live_, kLiveInterval, relaxing))) {
+    std::fprintf(stderr, "\r%-150s", line.c_str());
+    std::fflush(stderr);
+    line_open_ = true;
+    last_live_ = wall;
+  }
+  if (!live_ && interval_ > 0 && (now || due(wall, last_plain_, interval_, relaxing))) {
+    std::fprintf(stderr, "cortex: %s\n", line.c_str());
+    std::fflush(stderr);
+    last_plain_ = wall;
+  }
+  if (now || due(wall, last_log_, kLogInterval, relaxing)) {
+    spdlog::info("{}", line);
+    last_log_ = wall;
+  }
+}
+
+void ProgressReporter::window(const System& system, const MinimizationResult& result) {
+  const double wall = wallSeconds();
+  pace_.add(wall, system.time());
+  const bool done = system.time() >= end_time_;
+  std::string line = fmt::format("t = {:.4g} / {:.4g} s ({:.0f}%) | wall {}, {} left", system.time(), end_time_,
+                                 end_time_ > 0 ? 100 * system.time() / end_time_ : 100.0, duration(wall),
+                                 duration(done ? 0.0 : pace_.secondsFor(end_time_ - system.time())));
+  line += throughput(system, wall);
+  if (system.hasMechanics())
+    line += fmt::format(" | last relaxation {} iterations, max force {:.3g} pN", result.iterations, result.max_force);
+  show(line, done, false);
+  last_window_ = wall;
+}
+
+void ProgressReporter::relaxing(const System& system, const std::string& what, const MinimizerProgress& p) {
+  const double wall = wallSeconds();
+  // Cheap when no channel is due: this runs every minimizer iteration.
+  if (!(live_ && due(wall, last_live_, kLiveInterval, true)) && !(!live_ && interval_ > 0 && due(wall, last_plain_, interval_, true)) &&
+      !due(wall, last_log_, kLogInterval, true))
+    return;
+  show(fmt::format("t = {:.4g} / {:.4g} s | wall {} | relaxing {}: {} iterations, max force {:.3g} pN (tolerance "
+                   "{:.3g} pN)",
+                   system.time(), end_time_, duration(wall), what, p.iterations, p.max_force, p.tolerance),
+       false, true);
+}
+
+void ProgressReporter::finish() {
+  if (line_open_) std::fprintf(stderr, "\n");
+  line_open_ = false;
+}
+
+}  // namespace cortex
