@@ -23,14 +23,11 @@ def command(*argv):
     return code, out.getvalue(), err.getvalue()
 
 
-def program(*argv, env=None):
-    """Run a program (e.g. /usr/bin/python3 -m cortex ...) with the package importable."""
-    environment = dict(os.environ, PYTHONPATH=PYTHON_DIR, **(env or {}))
-    return subprocess.run([str(a) for a in argv], capture_output=True, text=True, env=environment)
-
-
 def python(*argv, env=None):
-    return program(sys.executable, *argv, env=env)
+    """Run this Python interpreter (`-m cortex ...`, a script) with the package importable."""
+    environment = dict(os.environ, PYTHONPATH=PYTHON_DIR, **(env or {}))
+    return subprocess.run([sys.executable] + [str(a) for a in argv], capture_output=True, text=True,
+                          env=environment)
 
 
 def assert_png(test, path):

@@ -39,7 +39,8 @@ def add_arguments(p):
     common.add_figure(p, "5", 100)
     p.add_argument("--fps", type=float, default=10.0, help="frames per second (default 10)")
     p.add_argument("--montage", action="store_true", help="write a PNG grid of snapshots instead of an MP4")
-    p.add_argument("--clim", type=float, help="colour limit |H| in 1/nm (default: 99th percentile over the run)")
+    p.add_argument("--clim", type=float,
+                   help="colour limit |H| in 1/nm (default: the largest 99th percentile of |H| of a snapshot)")
     p.add_argument("--cmap", default="RdBu", help="diverging colormap, low = red (default RdBu)")
     p.add_argument("--elev", type=float, default=20.0, help="view elevation in degrees (default 20)")
     p.add_argument("--azim", type=float, default=-60.0, help="view azimuth in degrees (default -60)")
@@ -54,18 +55,21 @@ class Scene:
         self.run = run
         self.indices = indices
         self.membrane = args.membrane
-        points, membranes = [], []
+        corners, limits = [], []          # per snapshot: extents of what is drawn, colour limit
         for s in map(run.snapshot, indices):
-            for m in self.membranes(s):
-                points.append(m.vertices)
-                membranes.append(m)
+            membranes = self.membranes(s)
+            points = [m.vertices for m in membranes]
             if s.filaments is not None:
                 points += [s.filaments.beads, s.filaments.linkers, s.filaments.motors]
-        if not points:
+            if points:
+                corners.append(np.stack(plotting.bounds(points, pad=0.0)))
+            if membranes:
+                limits.append(plotting.curvature_limit(membranes))
+        if not corners:
             raise CortexError(f"{run.trajectory_path}: no membranes or filaments to draw")
-        self.lo, self.hi = plotting.bounds(points)
-        self.has_membranes = bool(membranes)
-        self.limit = args.clim or plotting.curvature_limit(membranes)
+        self.lo, self.hi = plotting.bounds(corners)
+        self.has_membranes = bool(limits)
+        self.limit = args.clim or max(limits, default=1.0)
         self.norm = plotting.curvature_norm(self.limit)
         self.cmap = plotting.pyplot().get_cmap(args.cmap)
         self.view = (args.elev, args.azim)
@@ -93,8 +97,9 @@ class Scene:
         ax.set_axis_off()
         ax.set_title(separator.join(parts), fontsize=8)
 
-    def plot_area(self, fig):
-        """Right edge of the 3D axes (figure fraction); the colour bar, if any, goes beyond it."""
+    def add_colour_bar(self, fig):
+        """The curvature colour bar at the right of a figure with membranes; returns the
+        right edge left for the 3D axes (figure fraction)."""
         if not self.has_membranes:
             return 1.0
         plotting.curvature_colorbar(fig, self.limit, self.cmap, fig.add_axes([0.86, 0.25, 0.025, 0.5]))
@@ -109,7 +114,7 @@ def write_frames(scene, folder, args):
     try:
         for k, i in enumerate(scene.indices):
             fig.clf()
-            right = scene.plot_area(fig)
+            right = scene.add_colour_bar(fig)
             scene.draw(fig.add_axes([0.0, 0.0, right, 0.95], projection="3d"), i, ", ")
             fig.savefig(os.path.join(folder, f"frame_{k:05d}.png"), dpi=args.dpi)
     finally:
@@ -133,7 +138,7 @@ def montage(scene, out, args):
     nrows = math.ceil(len(keep) / ncols)
     w, h = args.size
     fig = plotting.pyplot().figure(figsize=(w * ncols * 0.6, h * nrows * 0.6))
-    right = scene.plot_area(fig)
+    right = scene.add_colour_bar(fig)
     fig.subplots_adjust(left=0.0, right=right, bottom=0.0, top=0.95, wspace=0.0, hspace=0.15)
     for k, i in enumerate(keep):
         scene.draw(fig.add_subplot(nrows, ncols, k + 1, projection="3d"), i, "\n")
