@@ -1,0 +1,32 @@
+"""`python3 -m cortex COMMAND ...`: parse the command line, run the command, and turn
+bad input (CortexError) into one line on stderr and exit code 2."""
+
+import argparse
+import sys
+
+from .commands import COMMANDS
+from .errors import CortexError
+
+
+def parser():
+    p = argparse.ArgumentParser(
+        prog="python3 -m cortex",
+        description="Look at cortex runs: pictures, plots, movies, numbers (docs/python.md).",
+        epilog="Every command takes the run folder(s) first and -o/--out FILE; "
+               "`python3 -m cortex COMMAND --help` lists its flags. Exit code 2 on bad input.")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, module in COMMANDS.items():
+        c = sub.add_parser(name, help=module.HELP, description=module.__doc__,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
+        module.add_arguments(c)
+        c.set_defaults(run=module.run)
+    return p
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
+    try:
+        return args.run(args)
+    except CortexError as e:
+        print(f"cortex {args.command}: error: {e}", file=sys.stderr)
+        return 2

@@ -1,0 +1,15 @@
+"""The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
+run(args) -> exit code."""
+
+from . import filaments, info, membrane, mesh_resolution, movie, plot, rg
+
+# Command name -> module, in the order `--help` lists them.
+COMMANDS = {
+    "info": info,
+    "plot": plot,
+    "membrane": membrane,
+    "filaments": filaments,
+    "movie": movie,
+    "rg": rg,
+    "mesh-resolution": mesh_resolution,
+}

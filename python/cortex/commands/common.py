@@ -1,0 +1,112 @@
+"""Flags every command spells the same way, and the look-ups behind them."""
+
+import argparse
+import os
+
+from ..errors import CortexError
+from ..run import Run
+
+
+def add_outdirs(parser, many):
+    if many:
+        parser.add_argument("outdir", nargs="+", help="cortex output folders (or their trajectory.h5)")
+    else:
+        parser.add_argument("outdir", help="cortex output folder (or its trajectory.h5)")
+
+
+def add_out(parser, what):
+    parser.add_argument("-o", "--out", metavar="FILE", help=what)
+
+
+def add_snapshot(parser, default):
+    parser.add_argument("--snapshot", default=default, metavar="LIST",
+                        help="snapshots, comma-separated: N (from 0; negative counts from the end), "
+                             f"first, last, or all (default: {default})")
+
+
+def add_membrane(parser):
+    parser.add_argument("--membrane", metavar="NAME", help="membrane name (default: every membrane "
+                        "where a picture can hold several, else the first)")
+
+
+def size_pair(spec):
+    """--size W[,H] in inches; H = W when one number is given."""
+    try:
+        values = [float(v) for v in spec.split(",")]
+    except ValueError:
+        values = []
+    if len(values) not in (1, 2) or min(values) <= 0:
+        raise argparse.ArgumentTypeError(f"'{spec}': expected W or W,H in inches, e.g. 4 or 6,4")
+    return values[0], values[-1]
+
+
+def add_figure(parser, size, dpi):
+    parser.add_argument("--size", type=size_pair, default=size, metavar="W[,H]",
+                        help=f"panel size in inches (default {size})")
+    parser.add_argument("--dpi", type=int, default=dpi, help=f"resolution (default {dpi})")
+
+
+def open_run(outdir):
+    """A run with at least one snapshot."""
+    run = Run(outdir)
+    if len(run) == 0:
+        raise CortexError(f"{run.trajectory_path}: holds no snapshots "
+                          "(was the run stopped before its first snapshot?)")
+    return run
+
+
+def snapshot_indices(run, spec):
+    """Indices named by a --snapshot list such as `0,5,last` or `all`."""
+    n = len(run)
+    out = []
+    for item in str(spec).split(","):
+        item = item.strip()
+        if item == "all":
+            out.extend(range(n))
+        elif item in ("first", "last"):
+            out.append(0 if item == "first" else n - 1)
+        else:
+            try:
+                i = int(item)
+            except ValueError:
+                raise CortexError(f"--snapshot '{item}': expected N, first, last or all") from None
+            if not -n <= i < n:
+                raise CortexError(f"{run.trajectory_path}: no snapshot {i} (the run has {n}: 0 .. {n - 1})")
+            out.append(i % n)
+    return out
+
+
+def membranes_of(snapshot, name=None):
+    """The snapshot's membranes, or only the one named; an error when there is none."""
+    membranes = snapshot.membranes
+    where = f"{snapshot.run.trajectory_path}: snapshot {snapshot.name}"
+    if not membranes:
+        raise CortexError(f"{where} holds no membranes")
+    if name is None:
+        return list(membranes.values())
+    if name not in membranes:
+        raise CortexError(f"{where} has no membrane '{name}' (it has {', '.join(membranes)})")
+    return [membranes[name]]
+
+
+def filaments_of(snapshot):
+    filaments = snapshot.filaments
+    if filaments is None:
+        raise CortexError(f"{snapshot.run.trajectory_path}: snapshot {snapshot.name} holds no filaments")
+    return filaments
+
+
+def default_out(run, filename):
+    return os.path.join(run.path, filename)
+
+
+def split_labels(spec, count, what):
+    """--labels: one comma-separated caption per panel or run."""
+    labels = [s.strip() for s in spec.split(",")]
+    if len(labels) != count:
+        raise CortexError(f"--labels has {len(labels)} entries for {count} {what}")
+    return labels
+
+
+def wrote(path):
+    print(f"wrote {path} ({os.path.getsize(path) // 1024} KB)")

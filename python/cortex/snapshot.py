@@ -1,0 +1,125 @@
+"""One snapshot of a run: its membranes, species copies and filaments as numpy arrays.
+
+Each part is read from the snapshot file the first time it is asked for
+(layout: docs/output.md and docs/filaments.md)."""
+
+from functools import cached_property
+
+import numpy as np
+
+# Every filament dataset of a snapshot with its dtype and its shape when empty, so files
+# written before a dataset existed read as empty arrays rather than failing.
+FILAMENT_DATASETS = {
+    "beads": (np.float64, (0, 3)),
+    "offsets": (np.int64, (1,)),
+    "ids": (np.int64, (0,)),
+    "types": (np.int32, (0,)),
+    "lengths": (np.float64, (0,)),
+    "monomers": (np.int64, (0,)),
+    "cylinders": (np.int32, (0, 2)),
+    "cylinder_filament": (np.int32, (0,)),
+    "linkers": (np.float64, (0, 2, 3)),
+    "linker_types": (np.int32, (0,)),
+    "linker_tensions": (np.float64, (0,)),
+    "motors": (np.float64, (0, 2, 3)),
+    "motor_types": (np.int32, (0,)),
+    "motor_tensions": (np.float64, (0,)),
+    "branch_points": (np.float64, (0, 3)),
+}
+
+
+class Membrane:
+    """A triangle mesh: vertices (n,3) nm, triangles (m,3) vertex indices,
+    mean_curvature (n) 1/nm or None when the file has none."""
+
+    def __init__(self, name, vertices, triangles, mean_curvature):
+        self.name = name
+        self.vertices = vertices
+        self.triangles = triangles
+        self.mean_curvature = mean_curvature
+
+    def __repr__(self):
+        return f"<Membrane {self.name!r}: {len(self.vertices)} vertices, {len(self.triangles)} triangles>"
+
+
+class Filaments:
+    """The filament network: one attribute per dataset of FILAMENT_DATASETS (beads,
+    offsets, ids, types, lengths, monomers, cylinders, cylinder_filament, linkers,
+    linker_types, linker_tensions, motors, motor_types, motor_tensions, branch_points)."""
+
+    def __init__(self, arrays):
+        self.__dict__.update(arrays)
+
+    def __len__(self):
+        return len(self.offsets) - 1
+
+    @property
+    def polylines(self):
+        """Beads of each filament, minus end first: a list of (k_i,3) arrays."""
+        o = self.offsets
+        return [self.beads[o[i]:o[i + 1]] for i in range(len(self))]
+
+    @property
+    def segments(self):
+        """Cylinders as (m,2,3) end points."""
+        return self.beads[self.cylinders]
+
+    def __repr__(self):
+        return (f"<Filaments: {len(self)} filaments, {len(self.beads)} beads, {len(self.linkers)} linkers, "
+                f"{len(self.motors)} motors, {len(self.branch_points)} branch points>")
+
+
+class Snapshot:
+    """Snapshot `index` (group /snapshots/`name`) of a run."""
+
+    def __init__(self, run, index, name):
+        self.run = run
+        self.index = index
+        self.name = name
+
+    def __repr__(self):
+        return f"<Snapshot {self.name} of {self.run.path!r} at t = {self.time:g} s>"
+
+    def _group(self):
+        return self.run._group(self.name)
+
+    @cached_property
+    def time(self):
+        """Time in s."""
+        return float(self._group().attrs.get("time", np.nan))
+
+    @cached_property
+    def step(self):
+        """Windows completed."""
+        return int(self._group().attrs.get("step", -1))
+
+    @cached_property
+    def membranes(self):
+        """Membranes by name (an empty dict in runs without them)."""
+        g = self._group()
+        if "membranes" not in g:
+            return {}
+        out = {}
+        for name, m in sorted(g["membranes"].items()):
+            h = np.asarray(m["mean_curvature"][()], dtype=float) if "mean_curvature" in m else None
+            out[name] = Membrane(name, np.asarray(m["vertices"][()], dtype=float),
+                                 np.asarray(m["triangles"][()], dtype=np.int64), h)
+        return out
+
+    @cached_property
+    def species(self):
+        """Copies per compartment (nx,ny,nz) by species name (empty without [[species]])."""
+        g = self._group()
+        if "compartments/species" not in g:
+            return {}
+        return {name: d[()] for name, d in sorted(g["compartments/species"].items())}
+
+    @cached_property
+    def filaments(self):
+        """The filament network, or None in runs without filaments."""
+        g = self._group()
+        if "filaments" not in g:
+            return None
+        fg = g["filaments"]
+        return Filaments({key: np.asarray(fg[key][()], dtype=dtype) if key in fg else np.zeros(shape, dtype)
+                          for key, (dtype, shape) in FILAMENT_DATASETS.items()})

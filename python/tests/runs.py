@@ -1,0 +1,182 @@
+"""Tiny cortex runs for the Python tests, each a few seconds at most.
+
+ctest runs this file first (fixture python_runs), which runs the cortex binary
+($CORTEX_BINARY) on every config below into $CORTEX_TEST_RUNS/<name>; a test module run
+on its own makes the runs it needs if they are missing.
+"""
+
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# A vesicle shrinking from v = 1 to 0.85: 5 snapshots, a coarse mesh.
+VESICLE = """
+[simulation]
+seed = 1
+end_time = 0.2
+chemistry_window = 0.05
+snapshot_interval = 0.05
+
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+radius = 500.0
+mesh_size = 100.0
+bending_modulus = 100.0
+reduced_volume = [[0.0, 1.0], [0.2, 0.85]]
+"""
+
+# An open patch with a fixed boundary bulging into a cap (examples/patch_bulge.toml, coarse).
+PATCH = """
+[simulation]
+end_time = 0.0
+
+[mechanics]
+force_tolerance = 0.01
+
+[[membrane]]
+name = "patch"
+shape = "plane"
+size = [1000.0, 1000.0]
+mesh_size = 100.0
+boundary = "fixed"
+bending_modulus = 100.0
+spontaneous_curvature = 0.002
+area_model = "none"
+tension = 0.001
+"""
+
+# Eight filaments with fast-binding cross-linkers and motors: 6 snapshots.
+FILAMENTS = """
+[simulation]
+seed = 3
+end_time = 0.5
+chemistry_window = 0.05
+snapshot_interval = 0.1
+
+[mechanics]
+force_tolerance = 1.0
+minimizer = "lbfgs"
+
+[compartments]
+size = 500.0
+shape = [2, 2, 2]
+
+[[species]]
+name = "G"
+diffusion = 2.0e7
+concentration = 1.0
+
+[[species]]
+name = "AA"
+diffusion = 2.0e6
+concentration = 2.0
+
+[[species]]
+name = "MII"
+diffusion = 2.0e5
+concentration = 0.2
+
+[[filament_type]]
+name = "actin"
+monomer_species = "G"
+plus_on = 11.6
+plus_off = 1.4
+minus_on = 1.3
+minus_off = 0.8
+
+[[filaments]]
+type = "actin"
+count = 8
+length = 400.0
+placement = "random"
+region = { min = [300.0, 300.0, 300.0], max = [700.0, 700.0, 700.0] }
+
+[boundary]
+shape = "box"
+
+[[linker]]
+name = "alpha-actinin"
+species = "AA"
+on_rate = 50.0
+off_rate = 0.3
+
+[[motor]]
+name = "myosin"
+species = "MII"
+on_rate = 50.0
+off_rate = 0.2
+walk_rate = 20.0
+"""
+
+# Reaction-diffusion without membranes or filaments: species copies per compartment.
+SPECIES = """
+[simulation]
+seed = 1
+end_time = 0.03
+chemistry_window = 0.01
+snapshot_interval = 0.01
+
+[compartments]
+size = 500.0
+shape = [3, 3, 2]
+
+[[species]]
+name = "A"
+diffusion = 2.0e7
+copies = 2000
+
+[[species]]
+name = "B"
+diffusion = 2.0e6
+copies = 0
+
+[[reaction]]
+equation = "2 A -> B"
+rate = 0.01
+
+[[reaction]]
+equation = "B -> 2 A"
+rate = 1.0
+"""
+
+CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES}
+
+
+def root():
+    return os.environ.get("CORTEX_TEST_RUNS") or os.path.join(tempfile.gettempdir(), "cortex_python_test_runs")
+
+
+def binary():
+    return os.environ.get("CORTEX_BINARY") or os.path.join(HERE, "..", "..", "build", "cortex")
+
+
+def generate(name):
+    """Run cortex on CONFIGS[name] into root()/name, replacing an earlier run."""
+    os.makedirs(root(), exist_ok=True)
+    config = os.path.join(root(), f"{name}.toml")
+    with open(config, "w") as f:
+        f.write(CONFIGS[name])
+    outdir = os.path.join(root(), name)
+    done = subprocess.run([binary(), "run", config, "-o", outdir, "--overwrite"],
+                          capture_output=True, text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    if done.returncode != 0:
+        raise RuntimeError(f"cortex run {config} failed ({done.returncode}): {done.stderr.strip()}")
+    return outdir
+
+
+def path(name):
+    """The run folder of CONFIGS[name], made if it has no summary.json yet."""
+    outdir = os.path.join(root(), name)
+    if not os.path.isfile(os.path.join(outdir, "summary.json")):
+        generate(name)
+    return outdir
+
+
+if __name__ == "__main__":
+    for name in CONFIGS:
+        print(f"{generate(name)}")
+    sys.exit(0)

@@ -1,0 +1,144 @@
+"""Every command of `python3 -m cortex` on real runs; the old tools/ command lines; bad
+input exits with code 2 and one line naming what is wrong."""
+
+import os
+import tempfile
+import unittest
+
+import cortex
+from cortex import geometry
+from tests import runs
+from tests.helpers import REPOSITORY, assert_png, command, python
+
+
+class CommandsTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species")}
+        cls.tmp = tempfile.TemporaryDirectory()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def out(self, name):
+        return os.path.join(self.tmp.name, name)
+
+    def ok(self, *argv):
+        code, stdout, stderr = command(*argv)
+        self.assertEqual(code, 0, f"{argv}: {stderr}")
+        return stdout
+
+    def test_membrane(self):
+        v = self.runs["vesicle"]
+        self.ok("membrane", v, "-o", self.out("m1.png"))
+        self.ok("membrane", v, "--snapshot", "0,2,last", "--align", "--edges", "-o", self.out("m2.png"))
+        self.ok("membrane", v, "--snapshot", "first", "--views", "3", "--size", "2,2", "-o", self.out("m3.png"))
+        self.ok("membrane", v, self.runs["patch"], "--labels", "vesicle,patch", "-o", self.out("m4.png"))
+        for name in ("m1", "m2", "m3", "m4"):
+            assert_png(self, self.out(f"{name}.png"))
+
+    def test_filaments(self):
+        f = self.runs["filaments"]
+        self.ok("filaments", f, "-o", self.out("f1.png"))
+        self.ok("filaments", f, "--snapshot", "all", "--views", "2", "--axis", "y", "--wall", "z=1000",
+                "--ends", "--box", "0,0,0,1000,1000,1000", "--title", "test", "-o", self.out("f2.png"))
+        assert_png(self, self.out("f1.png"))
+        assert_png(self, self.out("f2.png"))
+
+    def test_rg(self):
+        f = self.runs["filaments"]
+        stdout = self.ok("rg", f, f, "--labels", "a,b", "--bound", "--normalize", "--csv", self.out("rg.csv"),
+                         "-o", self.out("rg.png"))
+        self.assertIn("a: Rg", stdout)
+        assert_png(self, self.out("rg.png"))
+        with open(self.out("rg.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,time_s,rg_nm,rg_rel,filaments,beads,linkers,motors,branch_points")
+        self.assertEqual(len(lines), 1 + 2 * len(cortex.open(f)))
+        self.assertIn("Rg", self.ok("rg", f, "--type", "0", "--per-length", "--quiet"))
+
+    def test_mesh_resolution(self):
+        stdout = self.ok("mesh-resolution", self.runs["vesicle"], "--mesh-size", "100", "-o", self.out("res.png"))
+        self.assertIn("mean edge", stdout)
+        assert_png(self, self.out("res.png"))
+
+    def test_plot(self):
+        self.ok("plot", self.runs["vesicle"], "membranes.vesicle.reduced_volume", "membranes.*.energy.total",
+                "-o", self.out("plot.png"))
+        assert_png(self, self.out("plot.png"))
+        self.ok("plot", self.runs["species"], "chemistry.species.*", "--x", "chemistry.events", "-o", self.out("p2.png"))
+        assert_png(self, self.out("p2.png"))
+
+    def test_info(self):
+        stdout = self.ok("info", self.runs["vesicle"], "--snapshot", "0")
+        self.assertIn("5 snapshots", stdout)
+        self.assertIn("shape class: sphere", stdout)
+        self.assertIn("membranes.vesicle.reduced_volume", stdout)
+        self.assertIn("8 filaments", self.ok("info", self.runs["filaments"]))
+        self.assertIn("species (copies, grid 3x3x2)", self.ok("info", self.runs["species"]))
+
+    def test_open_patch_is_not_a_vesicle(self):
+        stdout = self.ok("info", self.runs["patch"])
+        self.assertIn("shape class: open patch", stdout)
+        self.assertIn("no enclosed volume", stdout)
+        self.assertNotIn("reduced volume", stdout)
+        self.assertIn("shape class: open patch", self.ok("membrane", self.runs["patch"], "--info"))
+        with cortex.open(self.runs["patch"]) as run:
+            m = run.snapshot(-1).membranes["patch"]
+        self.assertGreater(geometry.boundary_edge_count(m.triangles), 0)
+        self.assertEqual(geometry.classify(m.vertices, m.triangles)[0], "open patch")
+        # a closed vesicle with one triangle removed is open too
+        with cortex.open(self.runs["vesicle"]) as run:
+            v = run.snapshot(0).membranes["vesicle"]
+        self.assertEqual(geometry.classify(v.vertices, v.triangles)[0], "sphere")
+        self.assertEqual(geometry.classify(v.vertices, v.triangles[1:])[0], "open patch")
+
+    def test_bad_input_exits_2_with_one_line(self):
+        v, s = self.runs["vesicle"], self.runs["species"]
+        cases = [
+            (["info", os.path.join(v, "missing")], "missing: no such run folder"),
+            (["membrane", v, "--snapshot", "9"], "no snapshot 9 (the run has 5"),
+            (["membrane", v, "--snapshot", "middle"], "--snapshot 'middle'"),
+            (["membrane", v, "--membrane", "cell"], "has no membrane 'cell' (it has vesicle)"),
+            (["membrane", v, "--labels", "a,b"], "--labels has 2 entries for 1 panels"),
+            (["membrane", v, "-o", os.path.join(v, "no", "such", "dir.png")], "dir.png: cannot write"),
+            (["plot", v, "nonsense"], "no observable column 'nonsense'"),
+            (["filaments", v], "holds no filaments"),
+            (["filaments", self.runs["filaments"], "--wall", "q=3"], "--wall 'q=3'"),
+            (["rg", v], "no snapshot with filaments"),
+            (["mesh-resolution", s], "holds no membranes"),
+            (["movie", s], "no membranes or filaments to draw"),
+        ]
+        for argv, message in cases:
+            with self.subTest(argv=argv):
+                code, _, stderr = command(*argv)
+                self.assertEqual(code, 2)
+                self.assertEqual(len(stderr.strip().splitlines()), 1, stderr)
+                self.assertIn(message, stderr)
+        code, _, stderr = command("membrane", v, "--size", "big")
+        self.assertEqual(code, 2)
+        self.assertIn("argument --size: 'big': expected W or W,H", stderr)
+
+    def test_module_and_old_tool_command_lines(self):
+        v, f = self.runs["vesicle"], self.runs["filaments"]
+        done = python("-m", "cortex", "info", v)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        tools = os.path.join(REPOSITORY, "tools")
+        for argv, png in [
+            (["render_membrane.py", v, "--montage", "0,last", "--out", self.out("t1.png")], "t1.png"),
+            (["render_filaments.py", f, "--snapshots", "0,last", "-o", self.out("t2.png")], "t2.png"),
+            (["filament_rg.py", f, "-o", self.out("t3.png")], "t3.png"),
+            (["mesh_resolution.py", v, "--out", self.out("t4.png")], "t4.png"),
+        ]:
+            with self.subTest(tool=argv[0]):
+                done = python(os.path.join(tools, argv[0]), *argv[1:])
+                self.assertEqual(done.returncode, 0, done.stderr)
+                assert_png(self, self.out(png))
+        done = python(os.path.join(tools, "render_membrane.py"), v, "--snapshot", "12")
+        self.assertEqual(done.returncode, 2)
+        self.assertIn("no snapshot 12", done.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

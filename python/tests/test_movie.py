@@ -1,0 +1,74 @@
+"""`movie`: an MP4 with one frame per snapshot for a membrane run and a filament run;
+a PNG montage with --montage or without ffmpeg."""
+
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+import unittest
+
+import cortex
+from tests import runs
+from tests.helpers import assert_png, command, python
+
+FFMPEG = shutil.which("ffmpeg")
+FFPROBE = shutil.which("ffprobe")
+
+
+def probe(path):
+    """(frames, width, height) of the first video stream."""
+    done = subprocess.run([FFPROBE, "-v", "error", "-select_streams", "v:0", "-count_frames",
+                           "-show_entries", "stream=nb_read_frames,width,height", "-of", "default=nw=1", path],
+                          capture_output=True, text=True, check=True)
+    fields = dict(line.split("=", 1) for line in done.stdout.split())
+    return int(fields["nb_read_frames"]), int(fields["width"]), int(fields["height"])
+
+
+class MovieTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.runs = {name: runs.path(name) for name in ("vesicle", "filaments")}
+        cls.tmp = tempfile.TemporaryDirectory()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    @unittest.skipIf(FFMPEG is None, "ffmpeg is not installed")
+    def test_mp4_has_a_frame_per_snapshot(self):
+        for name, outdir in self.runs.items():
+            with self.subTest(run=name):
+                out = os.path.join(self.tmp.name, f"{name}.mp4")
+                start = time.monotonic()
+                code, stdout, stderr = command("movie", outdir, "-o", out, "--fps", "5", "--size", "3.3")
+                self.assertEqual(code, 0, stderr)
+                self.assertLess(time.monotonic() - start, 30)
+                self.assertGreater(os.path.getsize(out), 0)
+                if FFPROBE is None:
+                    continue
+                frames, width, height = probe(out)
+                self.assertEqual(frames, len(cortex.open(outdir)))
+                self.assertEqual((width % 2, height % 2), (0, 0), "libx264 needs even sizes")
+
+    def test_montage_on_request(self):
+        out = os.path.join(self.tmp.name, "vesicle_montage.mp4")
+        code, stdout, stderr = command("movie", self.runs["vesicle"], "--montage", "-o", out)
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("--montage: wrote a montage of 5 of 5 snapshots", stdout)
+        assert_png(self, os.path.join(self.tmp.name, "vesicle_montage.png"))
+        self.assertFalse(os.path.exists(out))
+
+    def test_montage_without_ffmpeg(self):
+        empty = os.path.join(self.tmp.name, "no_programs")
+        os.makedirs(empty, exist_ok=True)
+        out = os.path.join(self.tmp.name, "filaments_movie.mp4")
+        done = python("-m", "cortex", "movie", self.runs["filaments"], "--snapshot", "0,-1", "-o", out,
+                      env={"PATH": empty})
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertIn("ffmpeg not found: wrote a montage of 2 of 2 snapshots", done.stdout)
+        assert_png(self, os.path.join(self.tmp.name, "filaments_movie.png"))
+
+
+if __name__ == "__main__":
+    unittest.main()
