@@ -1,5 +1,6 @@
-"""ctest driver: runs every example briefly (at most two snapshot intervals) and opens
-its trajectory.xdmf in ParaView with check_xdmf.py (pvpython under xvfb-run).
+"""ctest driver: runs every example briefly (at most two snapshot intervals), opens its
+trajectory.xdmf in ParaView with check_xdmf.py and renders it with
+tools/paraview_picture.py (pvpython under xvfb-run).
 
 Usage: python3 open_examples.py CORTEX PVPYTHON XVFB_RUN EXAMPLES_DIR WORKDIR
 """
@@ -22,6 +23,7 @@ def main(cortex, pvpython, xvfb_run, examples, workdir):
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     checker = pathlib.Path(__file__).with_name("check_xdmf.py")
+    tools = pathlib.Path(__file__).resolve().parents[2] / "tools"
     failed = []
     for example in sorted(pathlib.Path(examples).glob("*.toml")):
         config = tomllib.loads(example.read_text())
@@ -38,6 +40,11 @@ def main(cortex, pvpython, xvfb_run, examples, workdir):
         print("\n".join(lines) if lines else f"{example.name}: no output; stderr: {check.stderr[-2000:]}")
         if check.returncode != 0:
             failed.append(f"{example.name}: ParaView check exited {check.returncode}")
+        picture = out / "paraview.png"
+        render = subprocess.run([xvfb_run, "-a", pvpython, str(tools / "paraview_picture.py"), str(out), "-o",
+                                 str(picture), "--size", "400,300"], capture_output=True, text=True)
+        if render.returncode != 0 or not picture.is_file() or picture.stat().st_size < 5000:
+            failed.append(f"{example.name}: paraview_picture.py exited {render.returncode}: {render.stderr[-2000:]}")
     if failed:
         print("FAILED:", *failed, sep="\n  ")
         return 1
