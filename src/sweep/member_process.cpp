@@ -9,7 +9,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <utility>
 
 #include "core/error.hpp"
 
@@ -60,9 +59,6 @@ ChildProcess::ChildProcess(const std::filesystem::path& program, const std::vect
   if (pid_ < 0) throw RunError(fmt::format("cannot start a member process: {}", std::strerror(errno)));
   if (pid_ == 0) execChild(parent, program_text.c_str(), argv.data(), workdir_text.c_str(), console_text.c_str());
 }
-
-ChildProcess::ChildProcess(ChildProcess&& other) noexcept
-    : pid_(std::exchange(other.pid_, -1)), interrupted_(other.interrupted_) {}
 
 ChildProcess::~ChildProcess() {
   if (pid_ <= 0) return;

@@ -29,8 +29,6 @@ class ChildProcess {
   // Throws RunError when the process cannot be created.
   ChildProcess(const std::filesystem::path& program, const std::vector<std::string>& args,
                const std::filesystem::path& workdir, const std::filesystem::path& console);
-  ChildProcess(ChildProcess&& other) noexcept;
-  ChildProcess& operator=(ChildProcess&&) = delete;
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
   // A child still running when its owner goes (an exception unwinding) is killed and reaped.

@@ -73,16 +73,18 @@ std::map<std::string, fs::file_time_type> finishedMembers(const fs::path& out) {
   return finished;
 }
 
-// Starts the sweep, waits until `done` members have finished, then sends `signal`;
-// returns the sweep's exit code and which members had finished.
+// Starts the sweep, waits until `done` members have finished, calls `meanwhile`, then
+// sends `signal`; returns the sweep's exit code and which members had finished.
 std::pair<int, std::map<std::string, fs::file_time_type>> interrupt(const Sweep& s, const fs::path& out,
-                                                                    std::size_t done, int signal) {
+                                                                    std::size_t done, int signal,
+                                                                    const std::function<void()>& meanwhile = [] {}) {
   const pid_t pid = spawnCortex(s.args(out));
   EXPECT_GT(pid, 0);
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while ((!fs::exists(out / "members") || finishedMembers(out).size() < done) &&
          std::chrono::steady_clock::now() < until)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  meanwhile();
   kill(pid, signal);
   const int code = waitFor(pid);
   return {code, finishedMembers(out)};
@@ -176,12 +178,15 @@ TEST(SweepRun, KilledSweepCompletesOnRerunWithoutRedoingFinishedMembers) {
   EXPECT_EQ(readFile(out / "sweep.csv"), readFile(s.dir / "whole" / "sweep.csv"));
 }
 
-TEST(SweepRun, TerminatedSweepStopsItsMembersWritesWhatIsDoneAndContinues) {
+TEST(SweepRun, TerminatedSweepStopsItsMembersWritesWhatIsDoneAndContinuesAndHoldsItsFolder) {
   const Sweep s;
   const RunResult whole = s.run(s.dir / "whole");
   ASSERT_EQ(whole.exit_code, 0) << describe(whole);
   const fs::path out = s.dir / "stopped";
-  const auto [code, finished] = interrupt(s, out, 2, SIGTERM);
+  RunResult second;  // a second sweep into the folder while the first runs
+  const auto [code, finished] = interrupt(s, out, 2, SIGTERM, [&] { second = s.run(out); });
+  EXPECT_EQ(second.exit_code, 2) << describe(second);
+  EXPECT_NE(second.err.find("another cortex sweep is running"), std::string::npos) << describe(second);
   ASSERT_LT(finished.size(), 12u) << "the sweep ended before it could be stopped";
   EXPECT_EQ(code, 3);
   const std::string partial = readFile(out / "sweep.csv");
