@@ -215,7 +215,8 @@ SweepSpec readSweepFile(const std::filesystem::path& file) {
 
   const toml::node* base = root.get("base");
   if (!base || !base->is_string() || base->as_string()->get().empty())
-    fail(base ? base : &root, "base", "is required: the path of the run config to sweep over, relative to this file");
+    fail(base ? base : &root, "base",
+         "is required: the path of the run config to sweep over (a string), relative to this file");
   spec.base = (file.parent_path() / base->as_string()->get()).lexically_normal();
 
   if (const toml::node* parallel = root.get("parallel")) {
