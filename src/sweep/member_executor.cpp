@@ -30,6 +30,10 @@ std::vector<MemberOutcome> LocalExecutor::collect() {
   return done;
 }
 
+std::string LocalExecutor::describe() const {
+  return fmt::format("{} local process{}", slots_, slots_ == 1 ? "" : "es");
+}
+
 void LocalExecutor::interruptAll() {
   for (MemberRun& run : runs_) run.interrupt();
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <list>
+#include <string>
 #include <vector>
 
 #include "sweep/member_run.hpp"
@@ -24,6 +25,8 @@ class MemberExecutor {
   virtual std::size_t running() const = 0;
   // Whether a part of the executor (an MPI rank) was asked to stop by a signal of its own.
   virtual bool stopRequested() const { return false; }
+  // Where members run, for the log: "2 local processes", "3 MPI worker ranks".
+  virtual std::string describe() const = 0;
 };
 
 // Up to `slots` members at a time as child processes of this one.
@@ -35,6 +38,7 @@ class LocalExecutor : public MemberExecutor {
   std::vector<MemberOutcome> collect() override;
   void interruptAll() override;
   std::size_t running() const override { return runs_.size(); }
+  std::string describe() const override;
 
  private:
   std::filesystem::path program_;

@@ -1,6 +1,7 @@
 #ifdef CORTEX_HAVE_MPI
 #include "sweep/mpi_sweep.hpp"
 
+#include <fmt/format.h>
 #include <mpi.h>
 
 #include <algorithm>
@@ -90,7 +91,7 @@ MemberOutcome outcomeFrom(const nlohmann::json& j) {
 // Rank 0's view of the workers: which wait for a member, which run one.
 class RankExecutor : public MemberExecutor {
  public:
-  explicit RankExecutor(int size) : unreleased_(size - 1) {}
+  explicit RankExecutor(int size) : workers_(size - 1), unreleased_(size - 1) {}
 
   // Workers' messages are received by collect(), which the coordinator calls first.
   bool hasFreeSlot() override { return !idle_.empty(); }
@@ -109,6 +110,7 @@ class RankExecutor : public MemberExecutor {
   }
   std::size_t running() const override { return busy_.size(); }
   bool stopRequested() const override { return stop_requested_; }
+  std::string describe() const override { return fmt::format("{} MPI worker ranks", workers_); }
 
   // Tells every worker there is no more work, once each is idle (running members are
   // asked to stop first). Called on every way out of rank 0, errors included, so that no
@@ -137,7 +139,7 @@ class RankExecutor : public MemberExecutor {
     }
   }
 
-  int unreleased_;
+  int workers_, unreleased_;
   std::vector<int> idle_, busy_;
   std::vector<MemberOutcome> outcomes_;
   bool stop_requested_ = false;

@@ -161,8 +161,9 @@ int SweepCoordinator::run(MemberExecutor& executor) {
     tasks.push_back(std::move(task));
   }
   const std::size_t resumed = static_cast<std::size_t>(std::count(states.begin(), states.end(), MemberState::kResumable));
-  log->info("cortex {} sweep {} over {}: {} members; {} finished before, {} to resume, {} to start", CORTEX_VERSION,
-            spec_.file.string(), base, n, n - tasks.size(), resumed, tasks.size() - resumed);
+  log->info("cortex {} sweep {} over {}: {} members; {} finished before, {} to resume, {} to start; on {}",
+            CORTEX_VERSION, spec_.file.string(), base, n, n - tasks.size(), resumed, tasks.size() - resumed,
+            executor.describe());
 
   dispatch(executor, tasks, outcomes, *log);
 
