@@ -10,6 +10,8 @@
 
 #include "core/error.hpp"
 #include "io/run_driver.hpp"
+#include "sweep/member_check.hpp"
+#include "sweep/sweep.hpp"
 
 int main(int argc, char** argv) {
   // HDF5 locks files on open; a user looking at trajectory.h5 in h5py or ParaView
@@ -43,6 +45,16 @@ int main(int argc, char** argv) {
   check_cmd->add_option("config", config, "Config file (TOML)")->required();
   check_cmd->add_option("--set", check_overrides, "Override a config key: key.path=value");
 
+  cortex::SweepRequest sweep;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Run a parameter sweep: many runs of one config (docs/sweep.md)");
+  sweep_cmd->add_option("sweep", sweep.file, "Sweep file (TOML)")->required();
+  sweep_cmd->add_option("-o,--output", sweep.output_dir, "Output folder (default: <sweep name>_out)");
+  sweep_cmd->add_option("--parallel", sweep.parallel, "Members at once (default: the file's parallel, else one per core)")
+      ->check(CLI::Range(1, 4096));
+  sweep_cmd->add_option("--threads", sweep.threads, "OpenMP threads per member")->check(CLI::Range(1, 1024));
+  sweep_cmd->add_flag("--dry-run", sweep.dry_run, "Check every member and list them; run nothing");
+  sweep_cmd->add_flag("-q,--quiet", sweep.quiet, "No progress lines on the terminal");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -54,9 +66,18 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) {
-      std::cout << cortex::checkConfig(config, check_overrides) << '\n';
+      if (cortex::isSweepFile(config)) {
+        if (!check_overrides.empty()) {
+          std::cerr << "cortex check: --set applies to a run config, not to a sweep file (" << config << ")\n";
+          return 2;
+        }
+        std::cout << cortex::checkSweep(config) << '\n';
+      } else {
+        std::cout << cortex::checkConfig(config, check_overrides) << '\n';
+      }
       return 0;
     }
+    if (*sweep_cmd) return cortex::runSweep(sweep);
     if (config.empty() == run.resume_dir.empty()) {
       std::cerr << "cortex run: give either a config file or --resume OUTDIR\n";
       return 2;

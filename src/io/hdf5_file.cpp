@@ -205,6 +205,38 @@ void File::write(const std::string& path, const std::vector<std::uint8_t>& data,
   writeAs(path, data, std::move(shape));
 }
 
+void File::write(const std::string& path, const std::vector<std::string>& data) {
+  if (exists(path)) remove(path);
+  const Handle type(utf8StringType(), H5Tclose);
+  const hsize_t count = data.size();
+  const Handle space(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  const Handle lcpl(intermediateGroupsLcpl(), H5Pclose);
+  const Handle dataset(H5Dcreate2(id_, path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+                       H5Dclose);
+  if (!dataset.valid()) fail("create dataset", path);
+  // Variable-length strings are written as an array of char pointers.
+  std::vector<const char*> pointers;
+  for (const std::string& s : data) pointers.push_back(s.c_str());
+  if (!data.empty() && H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
+    fail("write dataset", path);
+}
+
+std::vector<std::string> File::readStrings(const std::string& path) const {
+  const Handle dataset(H5Dopen2(id_, path.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid()) fail("open dataset", path);
+  const Handle type(utf8StringType(), H5Tclose);
+  std::vector<char*> pointers(elementCount(dimensions(dataset.get())), nullptr);
+  if (!pointers.empty() &&
+      H5Dread(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
+    fail("read dataset", path);
+  std::vector<std::string> strings;
+  for (char* p : pointers) {
+    strings.emplace_back(p != nullptr ? p : "");
+    H5free_memory(p);  // HDF5 allocated each string
+  }
+  return strings;
+}
+
 std::vector<double> File::readDoubles(const std::string& path, Shape* shape) const {
   return readAs<double>(path, shape);
 }

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
-#include <string>
 #include <vector>
 
 namespace cortex::h5 {
@@ -46,6 +45,8 @@ class File {
   void write(const std::string& path, const std::vector<std::int64_t>& data, Shape shape = {});
   void write(const std::string& path, const std::vector<std::int8_t>& data, Shape shape = {});
   void write(const std::string& path, const std::vector<std::uint8_t>& data, Shape shape = {});
+  // A 1-D dataset of variable-length UTF-8 strings (h5py reads them as str).
+  void write(const std::string& path, const std::vector<std::string>& data);
 
   // Reads convert from the stored numeric type; `shape` (if given) receives the dims.
   std::vector<double> readDoubles(const std::string& path, Shape* shape = nullptr) const;
@@ -53,6 +54,7 @@ class File {
   std::vector<std::int64_t> readInt64(const std::string& path, Shape* shape = nullptr) const;
   std::vector<std::int8_t> readInt8(const std::string& path, Shape* shape = nullptr) const;
   std::vector<std::uint8_t> readUInt8(const std::string& path, Shape* shape = nullptr) const;
+  std::vector<std::string> readStrings(const std::string& path) const;
   Shape shape(const std::string& path) const;  // without reading the data
 
   // Scalar attributes on any group or dataset; setting replaces an existing one.

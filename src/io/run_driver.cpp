@@ -254,7 +254,10 @@ RunOutcome runSimulation(const RunRequest& request) {
 }
 
 std::string checkConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  const Config config = loadConfig(file, overrides);
+  return checkLoadedConfig(loadConfig(file, overrides), file);
+}
+
+std::string checkLoadedConfig(const Config& config, const std::filesystem::path& file) {
   // Everything a run builds before its first step (meshes, filament placement, engines)
   // is built here too, so that check and run refuse the same inputs.
   const auto system = std::make_unique<System>(config);

@@ -28,5 +28,7 @@ struct RunRequest {
 RunOutcome runSimulation(const RunRequest& request);
 // Validates a config (and builds its meshes) without running; returns a one-line report.
 std::string checkConfig(const std::filesystem::path& config, const std::vector<std::string>& overrides);
+// The same for a config already loaded from `file` (a sweep checks each member's this way).
+std::string checkLoadedConfig(const Config& config, const std::filesystem::path& file);
 
 }  // namespace cortex

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <hdf5.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +24,8 @@
 #include <vector>
 
 #include "io/hdf5_file.hpp"
+
+extern char** environ;
 
 namespace cortex::cli_test {
 
@@ -115,11 +119,11 @@ inline std::string describe(const RunResult& r) {
          "\nstderr:\n" + r.err;
 }
 
-// Runs `cortex args...` with stdin from /dev/null; stdout and stderr go to files in
+// Runs `program args...` with stdin from /dev/null; stdout and stderr go to files in
 // capture_dir (kept there for inspection) and are returned. `env` holds extra
 // "NAME=value" settings for the child only.
-inline RunResult runCortex(const std::vector<std::string>& args, const fs::path& capture_dir,
-                           const std::vector<std::string>& env = {}) {
+inline RunResult runProgram(const fs::path& program, const std::vector<std::string>& args,
+                            const fs::path& capture_dir, const std::vector<std::string>& env = {}) {
   static std::atomic<int> counter{0};
   const int n = counter++;
   const fs::path out = capture_dir / ("cortex_stdout_" + std::to_string(n) + ".txt");
@@ -129,7 +133,7 @@ inline RunResult runCortex(const std::vector<std::string>& args, const fs::path&
     const auto eq = e.find('=');
     r.command += e.substr(0, eq + 1) + shellQuote(e.substr(eq + 1)) + " ";
   }
-  r.command += shellQuote(cortexBinary().string());
+  r.command += shellQuote(program.string());
   for (const std::string& a : args) r.command += " " + shellQuote(a);
   const std::string shell =
       r.command + " </dev/null >" + shellQuote(out.string()) + " 2>" + shellQuote(err.string());
@@ -144,6 +148,41 @@ inline RunResult runCortex(const std::vector<std::string>& args, const fs::path&
   if (fs::exists(out)) r.out = readFile(out);
   if (fs::exists(err)) r.err = readFile(err);
   return r;
+}
+
+// `cortex args...`, as runProgram runs it.
+inline RunResult runCortex(const std::vector<std::string>& args, const fs::path& capture_dir,
+                           const std::vector<std::string>& env = {}) {
+  return runProgram(cortexBinary(), args, capture_dir, env);
+}
+
+// `cortex args...` started in the background, its output discarded.
+inline pid_t spawnCortex(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
+  std::vector<std::string> argv_s{cortexBinary().string()};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env_s;
+  for (char** e = environ; *e; ++e) env_s.emplace_back(*e);
+  env_s.insert(env_s.end(), env.begin(), env.end());
+  std::vector<char*> envp;
+  for (std::string& e : env_s) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  for (int fd : {0, 1, 2}) posix_spawn_file_actions_addopen(&actions, fd, "/dev/null", fd == 0 ? O_RDONLY : O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+// Exit code as runCortex reports it: the status, or 128 + the signal.
+inline int waitFor(pid_t pid) {
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
 }
 
 // Storage type of an HDF5 dataset, straight from the C API (the h5::File wrapper
