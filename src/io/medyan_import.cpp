@@ -561,7 +561,7 @@ MedyanImport Translator::run(const std::string& system_name, const std::string& 
         }
       if (!placed) skip(e.where, "MOTORWALKINGREACTION without a MOTORREACTION before it");
       else
-        done(e.where, fmt::format("MOTORWALKINGREACTION -> motor.walk_rate = {} /s per end (zero force)", r.params[0]));
+        done(e.where, "MOTORWALKINGREACTION: towards plus ends (rate below, with MOTORREACTION)");
     } else if (k == "BRANCHINGREACTION") {
       used_.insert(&e);
       const Reaction r = parseReaction(e, true);
@@ -782,16 +782,16 @@ MedyanImport Translator::run(const std::string& system_name, const std::string& 
     if (!e || i >= e->values.size()) return std::nullopt;
     return number(*e, i, "the value");
   };
-  // MEDYAN counts a binding-site pair once from each of its two sites (ordered pairs),
-  // cortex each unordered pair once: a pair binds at 2 x ONRATE per copy (docs/medyan.md,
-  // "Binding rates").
-  constexpr double kOrderedPairs = 2.0;
+  // A per-copy rate for one site pair in one compartment: cortex's per-pair rate in
+  // 1/(µM·s) is it times the copies per µM of a compartment (docs/medyan.md, "Binding
+  // rates": counting ordered pairs, twice as many, was measured and rejected).
+  constexpr double kOrderedPairs = 1.0;
   for (std::size_t i = 0; i < linkers.size(); ++i) {
     const Binder& b = linkers[i];
     toml << "\n[[linker]]\nspecies = " << quoted(b.species) << "\nmin_distance = " << num(b.rmin)
          << "\nmax_distance = " << num(b.rmax) << "\non_rate = " << num(kOrderedPairs * b.on * per_uM)
          << "\noff_rate = " << num(b.off) << "\nsite_spacing = " << spacing << "\n";
-    done(b.where, fmt::format("LINKERREACTION {}: ONRATE {} /s per copy and ordered site pair x 2 x {:.4g} copies/µM "
+    done(b.where, fmt::format("LINKERREACTION {}: ONRATE {} /s per copy and site pair x {:.4g} copies/µM "
                               "-> linker.{}.on_rate = {:.4g} /(µM·s) per pair; off_rate = {} /s; range {}-{} nm",
                               b.species, b.on, per_uM, i, kOrderedPairs * b.on * per_uM, b.off, b.rmin, b.rmax));
     if (const auto k = listValue("LSTRETCHINGK", i)) {
@@ -814,9 +814,8 @@ MedyanImport Translator::run(const std::string& system_name, const std::string& 
     const Binder& b = motors[i];
     toml << "\n[[motor]]\nspecies = " << quoted(b.species) << "\nmin_distance = " << num(b.rmin)
          << "\nmax_distance = " << num(b.rmax) << "\non_rate = " << num(kOrderedPairs * b.on * per_uM)
-         << "\noff_rate = " << num(b.off) << "\nwalk_rate = " << num(b.walks ? b.walk : 0.0)
-         << "\nsite_spacing = " << spacing << "\n";
-    done(b.where, fmt::format("MOTORREACTION {}: ONRATE {} /s per copy and ordered site pair x 2 x {:.4g} copies/µM "
+         << "\noff_rate = " << num(b.off) << "\nsite_spacing = " << spacing << "\n";
+    done(b.where, fmt::format("MOTORREACTION {}: ONRATE {} /s per copy and site pair x {:.4g} copies/µM "
                               "-> motor.{}.on_rate = {:.4g} /(µM·s) per pair; off_rate = {} /s; range {}-{} nm",
                               b.species, b.on, per_uM, i, kOrderedPairs * b.on * per_uM, b.off, b.rmin, b.rmax));
     if (!b.walks) skip(b.where, fmt::format("motor {}: no MOTORWALKINGREACTION: walk_rate = 0", b.species));
@@ -824,10 +823,19 @@ MedyanImport Translator::run(const std::string& system_name, const std::string& 
       toml << "stiffness = " << num(*k) << "\n";
       done(whereOf("MSTRETCHINGK"), fmt::format("MSTRETCHINGK -> motor.{}.stiffness = {} pN/nm", i, *k));
     }
-    if (const auto s = value("MOTORSTEPSIZE")) {
-      toml << "step_size = " << num(*s) << "\n";
-      done(whereOf("MOTORSTEPSIZE"), fmt::format("MOTORSTEPSIZE -> motor.{}.step_size = {} nm", i, *s));
-    }
+    // MEDYAN's walking reaction moves a motor end from binding site N to N + 1 (the
+    // manual's MOTORWALKINGREACTION); its rate is that of one head step of MOTORSTEPSIZE,
+    // so the end's mean speed is rate x MOTORSTEPSIZE. cortex's motors walk on a lattice
+    // of step_size: the binding sites here, at rate x MOTORSTEPSIZE / site distance.
+    const double site_nm = spacing * monomer_size;
+    const double head_step = value("MOTORSTEPSIZE").value_or(6.0);
+    const double walk = b.walks ? b.walk * head_step / site_nm : 0.0;
+    toml << "step_size = " << num(site_nm) << "\nwalk_rate = " << num(walk) << "\n";
+    if (b.walks)
+      done(b.where, fmt::format("MOTORWALKINGREACTION (site N -> N + 1) {} /s per end, MOTORSTEPSIZE {} nm -> "
+                                "motor.{}.step_size = {} nm (the binding-site spacing), walk_rate = {} x {} / {} = {:.4g} "
+                                "/s (same mean speed)",
+                                b.walk, head_step, i, site_nm, b.walk, head_step, site_nm, walk));
     std::string utype = "LOWDUTYCATCH";
     if (const Entry* e = find("DMUNBINDINGTYPE"); e && i < e->values.size()) utype = upperCase(e->values[i]);
     if (const auto f = listValue("DMUNBINDINGFORCE", i)) {

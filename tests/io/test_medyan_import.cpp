@@ -172,8 +172,8 @@ TEST(MedyanImport, TranslatesBothSpellingsWithUnitConversions) {
   ASSERT_EQ(f.linkers.size(), 1u);
   const LinkerType& l = f.linkers[0];
   EXPECT_EQ(l.species, "LD");
-  EXPECT_NEAR(l.on_rate, 2 * 0.02 * kPerMicromolar, 1e-9);  // ordered pairs: x 2
-  EXPECT_NEAR(l.on_rate, 3.01107, 1e-4);
+  EXPECT_NEAR(l.on_rate, 0.02 * kPerMicromolar, 1e-9);
+  EXPECT_NEAR(l.on_rate, 1.50554, 1e-4);
   EXPECT_DOUBLE_EQ(l.off_rate, 0.25);
   EXPECT_DOUBLE_EQ(l.min_distance, 30.0);
   EXPECT_DOUBLE_EQ(l.max_distance, 40.0);
@@ -184,12 +184,13 @@ TEST(MedyanImport, TranslatesBothSpellingsWithUnitConversions) {
   ASSERT_EQ(f.motors.size(), 1u);
   const MotorType& mo = f.motors[0];
   EXPECT_EQ(mo.species, "MD");
-  EXPECT_NEAR(mo.on_rate, 2 * 0.1 * kPerMicromolar, 1e-9);
+  EXPECT_NEAR(mo.on_rate, 0.1 * kPerMicromolar, 1e-9);
   EXPECT_DOUBLE_EQ(mo.off_rate, 1.5);
-  EXPECT_DOUBLE_EQ(mo.walk_rate, 0.3);
+  // Walking from binding site to binding site (27 nm) at the speed of 6 nm head steps.
+  EXPECT_DOUBLE_EQ(mo.step_size, 27.0);
+  EXPECT_NEAR(mo.walk_rate, 0.3 * 6.0 / 27.0, 1e-12);
   EXPECT_DOUBLE_EQ(mo.min_distance, 170.0);
   EXPECT_DOUBLE_EQ(mo.stiffness, 2.0);
-  EXPECT_DOUBLE_EQ(mo.step_size, 6.0);
   EXPECT_DOUBLE_EQ(mo.stall_force, 80.0);
   EXPECT_DOUBLE_EQ(mo.catch_force, 12.0);
   EXPECT_EQ(mo.heads_min, 10);
@@ -289,8 +290,10 @@ TEST(MedyanImport, RepositoryExampleTranslatesAndChecks) {
   const Config c = parseConfig(m.toml, "imported.toml", dir, {});
   ASSERT_TRUE(c.filaments);
   EXPECT_EQ(c.filaments->initial[0].count, 30);
-  EXPECT_NEAR(c.filaments->linkers[0].on_rate, 1.5055, 1e-4);
-  EXPECT_NEAR(c.filaments->motors[0].on_rate, 30.11, 1e-2);
+  EXPECT_NEAR(c.filaments->linkers[0].on_rate, 0.7528, 1e-4);
+  EXPECT_NEAR(c.filaments->motors[0].on_rate, 15.06, 1e-2);
+  EXPECT_NEAR(c.filaments->motors[0].walk_rate, 0.2 * 6.0 / 27.0, 1e-12);
+  EXPECT_DOUBLE_EQ(c.filaments->types[0].excluded_volume_distance, 3.78);
   EXPECT_EQ(c.filaments->motors[0].heads_min, 15);
   EXPECT_EQ(c.filaments->motors[0].heads_max, 30);
 }
