@@ -727,9 +727,16 @@ MedyanImport Translator::run(const std::string& system_name, const std::string& 
     const std::string s = upperCase(*shape);
     std::ostringstream b;
     if (s == "CUBIC") {
-      b << "\n[boundary]\nshape = \"box\"\nmin = [0.0, 0.0, 0.0]\nmax = [" << num(box[0]) << ", " << num(box[1])
-        << ", " << num(box[2]) << "]\n";
-      done(whereOf("BOUNDARYSHAPE"), "BOUNDARYSHAPE CUBIC -> boundary.shape = \"box\" (the compartment grid's box)");
+      // MEDYAN's manual: "The CUBIC BOUNDARYSHAPE creates boundary planes 25nm in from the
+      // faces of compartment grid."
+      const double inset = 25.0;
+      if (box[0] <= 2 * inset || box[1] <= 2 * inset || box[2] <= 2 * inset)
+        throw InputError(fmt::format("{}: BOUNDARYSHAPE CUBIC: the grid is too small for walls 25 nm inside it",
+                                     whereOf("BOUNDARYSHAPE")));
+      b << "\n[boundary]\nshape = \"box\"\nmin = [" << num(inset) << ", " << num(inset) << ", " << num(inset)
+        << "]\nmax = [" << num(box[0] - inset) << ", " << num(box[1] - inset) << ", " << num(box[2] - inset) << "]\n";
+      done(whereOf("BOUNDARYSHAPE"), "BOUNDARYSHAPE CUBIC -> boundary.shape = \"box\", walls 25 nm inside the "
+                                     "compartment grid's faces (MEDYAN's manual)");
     } else if (s == "SPHERICAL") {
       const auto d = value("BOUNDARYDIAMETER");
       if (!d) throw InputError(fmt::format("{}: BOUNDARYSHAPE SPHERICAL needs BOUNDARYDIAMETER", whereOf("BOUNDARYSHAPE")));

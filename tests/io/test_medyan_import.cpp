@@ -166,6 +166,9 @@ TEST(MedyanImport, TranslatesBothSpellingsWithUnitConversions) {
   EXPECT_EQ(f.initial[0].count, 12);
   EXPECT_DOUBLE_EQ(f.initial[0].length, 216.0);  // 2 cylinders of 108 nm
   ASSERT_TRUE(f.boundary);
+  // CUBIC: walls 25 nm inside the grid's faces (MEDYAN's manual).
+  EXPECT_EQ(f.boundary->min, Vec3(25.0, 25.0, 25.0));
+  EXPECT_EQ(f.boundary->max, Vec3(975.0, 975.0, 475.0));
   EXPECT_DOUBLE_EQ(f.boundary->repulsion, 40.0);
   EXPECT_DOUBLE_EQ(f.boundary->screening_length, 2.5);
 
