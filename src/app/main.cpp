@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "core/error.hpp"
+#include "io/medyan_import.hpp"
 #include "io/run_driver.hpp"
 #include "sweep/member_check.hpp"
 #include "sweep/sweep.hpp"
@@ -55,6 +56,14 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--dry-run", sweep.dry_run, "Check every member and list them; run nothing");
   sweep_cmd->add_flag("-q,--quiet", sweep.quiet, "No progress lines on the terminal");
 
+  std::string medyan_system, medyan_chemistry, medyan_output;
+  bool medyan_overwrite = false;
+  CLI::App* import_cmd = app.add_subcommand("import-medyan", "Translate MEDYAN input files into a config (docs/medyan.md)");
+  import_cmd->add_option("system", medyan_system, "MEDYAN system input file")->required();
+  import_cmd->add_option("chemistry", medyan_chemistry, "Chemistry input file (default: the system file's CHEMISTRYFILE)");
+  import_cmd->add_option("-o,--output", medyan_output, "Config file to write (TOML)")->required();
+  import_cmd->add_flag("--overwrite", medyan_overwrite, "Replace an existing output file");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -65,6 +74,10 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (*import_cmd)
+      return cortex::runImportMedyan(medyan_system,
+                                     medyan_chemistry.empty() ? std::nullopt : std::optional(std::filesystem::path(medyan_chemistry)),
+                                     medyan_output, medyan_overwrite, false);
     if (*check_cmd) {
       if (cortex::isSweepFile(config)) {
         if (!check_overrides.empty()) {

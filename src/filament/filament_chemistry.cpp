@@ -113,13 +113,32 @@ double FilamentChemistry::slipFactor(const LinkerType& l, double tension) const 
   return std::min(kMaxFactor, std::exp(std::min(std::abs(tension) * l.slip_length / kT_, 50.0)));
 }
 
-double FilamentChemistry::catchFactor(const MotorType& m, double tension) {
-  return tension > 0.0 ? std::exp(-tension / m.catch_force) : 1.0;
+// With heads (parallel cluster model, low duty ratio): the ensemble detaches at the
+// inverse of its mean unloaded lifetime ((1 + k_h/k_off)^N - 1)/(N k_h) (Erdmann &
+// Schwarz), the load F is shared by the N_b(F) = rho N + beta F/N bound heads of the
+// catch bond (more heads stay bound under load), and the ensemble steps each time one of
+// its N - N_b free heads binds, per bound head.
+double FilamentChemistry::boundHeads(const MotorType& m, double tension, int heads) {
+  const double n = heads;
+  return n * m.head_binding_rate / (m.head_binding_rate + m.off_rate) + m.head_load * std::max(tension, 0.0) / n;
 }
 
-double FilamentChemistry::walkFactor(const MotorType& m, double tension) {
-  if (tension <= 0.0) return 1.0;
-  return std::max(0.0, (m.stall_force - tension) / (m.stall_force + tension / m.hill_alpha));
+double FilamentChemistry::catchFactor(const MotorType& m, double tension, int heads) {
+  if (heads <= 0) return tension > 0.0 ? std::exp(-tension / m.catch_force) : 1.0;
+  if (m.off_rate <= 0.0) return 0.0;
+  const double n = heads, kh = m.head_binding_rate;
+  const double unloaded = n * kh / (std::pow(1.0 + kh / m.off_rate, n) - 1.0) / m.off_rate;
+  return tension > 0.0 ? unloaded * std::exp(-tension / (boundHeads(m, tension, heads) * m.catch_force)) : unloaded;
+}
+
+double FilamentChemistry::walkFactor(const MotorType& m, double tension, int heads) {
+  double ensemble = 1.0;
+  if (heads > 0) {
+    const double bound = boundHeads(m, tension, heads);
+    ensemble = std::max(0.0, (heads - bound) / bound);  // (N - N_b)/N_b
+  }
+  if (tension <= 0.0) return ensemble;
+  return ensemble * std::max(0.0, (m.stall_force - tension) / (m.stall_force + tension / m.hill_alpha));
 }
 
 double FilamentChemistry::maxEndLoad() const {
@@ -237,8 +256,8 @@ void FilamentChemistry::contributeBinding(BinderKind kind, const Binding& b, dou
     return;
   }
   const MotorType& m = net_.config().motors[b.type];
-  contribute(K::kMotorUnbind, b.type, b.compartment, sign * catchFactor(m, b.tension));
-  contribute(K::kMotorWalk, b.type, b.compartment, sign * 2.0 * walkFactor(m, b.tension));
+  contribute(K::kMotorUnbind, b.type, b.compartment, sign * catchFactor(m, b.tension, b.heads));
+  contribute(K::kMotorWalk, b.type, b.compartment, sign * 2.0 * walkFactor(m, b.tension, b.heads));
 }
 
 void FilamentChemistry::contributeBranch(const Branch& b, double sign) {

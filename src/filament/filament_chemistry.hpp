@@ -60,8 +60,11 @@ class FilamentChemistry final : public ReactionHook {
 
   // Force-dependent laws (exposed for tests).
   double slipFactor(const LinkerType& l, double tension) const;
-  static double catchFactor(const MotorType& m, double tension);
-  static double walkFactor(const MotorType& m, double tension);
+  // `heads`: the motor's head count (0: not modelled, MotorType::heads_min).
+  static double catchFactor(const MotorType& m, double tension, int heads = 0);
+  static double walkFactor(const MotorType& m, double tension, int heads = 0);
+  // N_b(F) of a motor with `heads` heads (> 0) under tension F.
+  static double boundHeads(const MotorType& m, double tension, int heads);
 
  private:
   struct Channel {

@@ -139,6 +139,15 @@ bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& rando
                    net_.sitePosition(kind, ch.type, p.filament[0], p.site[0]))
                       .norm();
   b.compartment = c;
+  if (kind == BinderKind::kMotor) {
+    const MotorType& m = net_.config().motors[ch.type];
+    if (m.heads_max > 0)
+      b.heads = m.heads_min + std::min(m.heads_max - m.heads_min,
+                                       static_cast<int>(random.uniform() * (m.heads_max - m.heads_min + 1)));
+    ++net_.events().motor_bindings;
+  } else {
+    ++net_.events().linker_bindings;
+  }
   net_.bind(kind, b);
   contributeBinding(kind, b, 1.0);
   return true;
@@ -153,11 +162,12 @@ bool FilamentChemistry::fireUnbind(const Channel& ch, Index c, RandomStream& ran
         const Binding& b = bound[k];
         if (b.type != ch.type || b.compartment != c) return 0.0;
         return kind == BinderKind::kLinker ? slipFactor(net_.config().linkers[b.type], b.tension)
-                                           : catchFactor(net_.config().motors[b.type], b.tension);
+                                           : catchFactor(net_.config().motors[b.type], b.tension, b.heads);
       },
       random);
   if (i < 0) return false;
   contributeBinding(kind, bound[i], -1.0);
+  ++(kind == BinderKind::kMotor ? net_.events().motor_unbindings : net_.events().linker_unbindings);
   net_.unbind(kind, static_cast<std::size_t>(i));
   return true;
 }
@@ -170,11 +180,13 @@ bool FilamentChemistry::fireWalk(const Channel& ch, Index c, RandomStream& rando
       [&](Index k) {
         const Binding& b = motors[k / 2];
         if (b.type != ch.type || b.compartment != c) return 0.0;
-        return walkFactor(net_.config().motors[b.type], b.tension);
+        return walkFactor(net_.config().motors[b.type], b.tension, b.heads);
       },
       random);
   if (i < 0) return false;
-  return net_.walk(static_cast<std::size_t>(i / 2), i % 2);  // blocked: void (thinning)
+  if (!net_.walk(static_cast<std::size_t>(i / 2), i % 2)) return false;  // blocked: void (thinning)
+  ++net_.events().motor_steps;
+  return true;
 }
 
 bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& random) {

@@ -32,6 +32,14 @@ struct Binding {
   double tension = 0.0;                // pN, k (l - l0) at the last minimization; 0 until then
   Index compartment = 0;               // where its reactions fire: fixed at binding and at each
                                        // minimization (chemistry's bookkeeping, not state)
+  int heads = 0;                       // motors: heads of this minifilament (0: not modelled)
+};
+
+// Events carried out since the start of the run (void events not counted; proteins
+// released by a shrinking end are not unbinding events).
+struct FilamentEvents {
+  std::int64_t linker_bindings = 0, linker_unbindings = 0;
+  std::int64_t motor_bindings = 0, motor_unbindings = 0, motor_steps = 0;
 };
 
 struct Branch {
@@ -121,6 +129,9 @@ class FilamentNetwork final : public Body {
   const FilamentLayout& layout() const { return layout_; }
   Index firstBead(Index f) const { return bead_start_[f]; }  // valid after setOffset
 
+  FilamentEvents& events() { return events_; }
+  const FilamentEvents& events() const { return events_; }
+
   // Restoring from a checkpoint.
   void restore(std::vector<Filament> filaments, std::vector<Binding> linkers, std::vector<Binding> motors,
                std::vector<Branch> branches);
@@ -137,6 +148,7 @@ class FilamentNetwork final : public Body {
   std::vector<Filament> filaments_;
   std::vector<Binding> linkers_, motors_;
   std::vector<Branch> branches_;
+  FilamentEvents events_;
   std::set<Key> occupied_;
   std::vector<Index> bead_start_;
   FilamentLayout layout_;

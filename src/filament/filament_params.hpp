@@ -89,6 +89,18 @@ struct MotorType {
   double stiffness = 2.5;       // pN/nm
   int site_spacing = 10;        // monomers between the sites where a motor may bind (walking
                                 // then moves it step by step between them)
+  // Head count (MEDYAN's NUMMOTORHEADSMIN/MAX; Erdmann & Schwarz's parallel cluster
+  // model, as in Popov et al. 2016): 0 = not modelled. Otherwise each motor draws N
+  // heads uniformly in [heads_min, heads_max] when it binds; with the duty ratio
+  // rho = head_binding_rate / (head_binding_rate + off_rate) and N_b = rho N bound heads,
+  //   k_off(F) = N k_h / ((1 + k_h/off_rate)^N - 1) e^(-F/(N_b F_c))   (F > 0)
+  //   k_walk(F) = walk_rate (N - N_b)/N_b * Hill(F),
+  // (docs/filaments.md, Motors; docs/medyan.md).
+  //   N_b(F) = rho N + head_load F / N under tension F > 0, the walking factor
+  //   (N - N_b)/N_b and the catch bond's shared load F/N_b both use it.
+  int heads_min = 0, heads_max = 0;
+  double head_binding_rate = 0.2;  // 1/s, k_h: one head's attachment rate
+  double head_load = 2.0;          // 1/pN, beta: heads recruited per unit load and head
 };
 
 // Arp2/3: a diffusing complex that, with one monomer from the pool, binds a site on a

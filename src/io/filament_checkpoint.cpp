@@ -18,6 +18,9 @@ void writeBindings(h5::File& f, const std::string& path, const std::vector<Bindi
   }
   f.write(path + "/ids", ids, {bound.size(), 5});
   f.write(path + "/rest_length", rest);
+  std::vector<std::int64_t> heads;
+  for (const Binding& b : bound) heads.push_back(b.heads);
+  f.write(path + "/heads", heads);
 }
 
 std::vector<Binding> readBindings(const h5::File& f, const std::string& path, std::size_t filaments,
@@ -25,6 +28,11 @@ std::vector<Binding> readBindings(const h5::File& f, const std::string& path, st
   const std::vector<std::int64_t> ids = f.readInt64(path + "/ids");
   const std::vector<double> rest = f.readDoubles(path + "/rest_length");
   if (ids.size() != 5 * rest.size()) throw InputError(fmt::format("{}: {} is malformed", file_name, path));
+  // Head counts (motors with heads modelled); absent in checkpoints of earlier versions.
+  const std::vector<std::int64_t> heads =
+      f.exists(path + "/heads") ? f.readInt64(path + "/heads") : std::vector<std::int64_t>{};
+  if (!heads.empty() && heads.size() != rest.size())
+    throw InputError(fmt::format("{}: {}/heads is malformed", file_name, path));
   std::vector<Binding> out(rest.size());
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::int64_t* r = &ids[5 * i];
@@ -32,6 +40,7 @@ std::vector<Binding> readBindings(const h5::File& f, const std::string& path, st
     out[i].filament = {static_cast<Index>(r[1]), static_cast<Index>(r[2])};
     out[i].site = {r[3], r[4]};
     out[i].rest_length = rest[i];
+    out[i].heads = heads.empty() ? 0 : static_cast<int>(heads[i]);
     for (Index fil : out[i].filament)
       if (fil < 0 || static_cast<std::size_t>(fil) >= filaments)
         throw InputError(fmt::format("{}: {} refers to a missing filament", file_name, path));
@@ -64,6 +73,9 @@ void writeFilamentState(h5::File& f, const FilamentState& network) {
   std::vector<std::int64_t> branches;
   for (const Branch& b : network.branches) branches.insert(branches.end(), {b.type, b.mother, b.daughter, b.site});
   f.write("/filaments/branches", branches, {network.branches.size(), 4});
+  const FilamentEvents& e = network.events;
+  f.write("/filaments/events", std::vector<std::int64_t>{e.linker_bindings, e.linker_unbindings, e.motor_bindings,
+                                                          e.motor_unbindings, e.motor_steps});
 }
 
 FilamentState readFilamentState(const h5::File& f, const std::string& file_name) {
@@ -94,6 +106,11 @@ FilamentState readFilamentState(const h5::File& f, const std::string& file_name)
   }
   s.linkers = readBindings(f, "/filaments/linkers", s.filaments.size(), file_name);
   s.motors = readBindings(f, "/filaments/motors", s.filaments.size(), file_name);
+  if (f.exists("/filaments/events")) {  // absent in checkpoints of earlier versions
+    const std::vector<std::int64_t> e = f.readInt64("/filaments/events");
+    if (e.size() != 5) throw malformed("events");
+    s.events = {e[0], e[1], e[2], e[3], e[4]};
+  }
   const std::vector<std::int64_t> branches = f.readInt64("/filaments/branches");
   if (branches.size() % 4 != 0) throw malformed("branches");
   for (std::size_t i = 0; i < branches.size(); i += 4) {

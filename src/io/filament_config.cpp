@@ -188,6 +188,16 @@ MotorType readMotor(const ConfigReader& r, const std::vector<SpeciesDef>& specie
   m.hill_alpha = r.number("hill_alpha", m.hill_alpha, Range::positive(), "");
   m.catch_force = r.number("catch_force", m.catch_force, Range::positive(), "pN");
   m.site_spacing = readSiteSpacing(r, m.site_spacing);
+  if (r.has("heads_min") != r.has("heads_max"))
+    r.fail(r.has("heads_min") ? "heads_max" : "heads_min", "is required with heads_min / heads_max (give both)");
+  m.heads_min = static_cast<int>(r.integer("heads_min", 0, 1, 10'000));
+  m.heads_max = static_cast<int>(r.integer("heads_max", 0, 1, 10'000));
+  if (m.heads_max < m.heads_min)
+    r.fail("heads_max", fmt::format("({}) must be >= heads_min ({})", m.heads_max, m.heads_min));
+  m.head_binding_rate = r.number("head_binding_rate", m.head_binding_rate, Range::positive(), "1/s");
+  m.head_load = r.number("head_load", m.head_load, Range::nonNegative(), "1/pN");
+  if (m.heads_max > 0 && m.off_rate <= 0)
+    r.fail("off_rate", "must be > 0 with heads (it is then one head's unbinding rate)");
   r.finish();
   return m;
 }

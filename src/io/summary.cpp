@@ -71,7 +71,13 @@ nlohmann::json filamentSummary(const System& system, const std::vector<TermEnerg
           {"energy", energy},
           {"linkers", countByType(config.linkers, net->linkers())},
           {"motors", countByType(config.motors, net->motors())},
-          {"branches", countByType(config.branchers, net->branches())}};
+          {"branches", countByType(config.branchers, net->branches())},
+          {"events",
+           {{"linker_bindings", net->events().linker_bindings},
+            {"linker_unbindings", net->events().linker_unbindings},
+            {"motor_bindings", net->events().motor_bindings},
+            {"motor_unbindings", net->events().motor_unbindings},
+            {"motor_steps", net->events().motor_steps}}}};
 }
 
 }  // namespace

@@ -67,6 +67,7 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
   if (restored) {
     checkRestored(config, *restored);
     network->restore(restored->filaments, restored->linkers, restored->motors, restored->branches);
+    network->events() = restored->events;
     return network;
   }
   RandomStream random(seed, StreamId::kFilamentPlacement);
@@ -80,7 +81,7 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
 }
 
 FilamentState filamentState(const FilamentNetwork& network) {
-  return {network.filaments(), network.linkers(), network.motors(), network.branches()};
+  return {network.filaments(), network.linkers(), network.motors(), network.branches(), network.events()};
 }
 
 }  // namespace cortex

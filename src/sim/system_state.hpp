@@ -73,6 +73,7 @@ struct FilamentState {
   std::vector<Filament> filaments;
   std::vector<Binding> linkers, motors;
   std::vector<Branch> branches;
+  FilamentEvents events;
 };
 
 struct SystemState {

@@ -248,6 +248,26 @@ TEST(FilamentOutputs, ResumedRunWritesTheSameFilaments) {
   EXPECT_EQ(xdmf, readFile(dir / "A" / "trajectory.xdmf"));
 }
 
+// Motors with heads: the head counts drawn at binding and the event counters are in the
+// checkpoint, so a resumed run continues identically.
+TEST(FilamentOutputs, ResumedRunWithMotorHeadsIsIdentical) {
+  TempDir dir;
+  runWholeAndResumed(
+      dir, [](double end) { return actomyosinConfig(end) + "heads_min = 15\nheads_max = 30\n"; }, 0.1, 0.2,
+      {"--threads", "1"});
+  if (::testing::Test::HasFatalFailure()) return;
+  const auto a = comparableSummary(dir / "A");
+  EXPECT_EQ(a, comparableSummary(dir / "B"));
+  EXPECT_GT(a["filaments"]["events"]["motor_bindings"].get<std::int64_t>(), 0);
+  const h5::File fa = h5::File::openReadOnly(dir / "A" / "checkpoint.h5");
+  const std::vector<std::int64_t> heads = fa.readInt64("/filaments/motors/heads");
+  ASSERT_FALSE(heads.empty());
+  for (std::int64_t h : heads) {
+    EXPECT_GE(h, 15);
+    EXPECT_LE(h, 30);
+  }
+}
+
 // A filament run is a function of (config, seed, thread count) — and here not even of the
 // thread count: same seed, 1 or 2 threads, identical summary and filament datasets; a
 // different seed differs.

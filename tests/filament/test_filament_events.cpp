@@ -50,6 +50,31 @@ TEST(FilamentForceLaws, SlipCatchAndHillFollowTheirFormulas) {
   EXPECT_EQ(FilamentChemistry::walkFactor(m, 200.0), 0.0);
 }
 
+// Motors with heads (parallel cluster model): unloaded ensemble lifetime
+// ((1 + k_h/k_off)^N - 1)/(N k_h), load shared by N_b(F) = rho N + beta F/N heads,
+// walking (N - N_b)/N_b per bound head; the rates are off_rate and walk_rate times these
+// factors.
+TEST(FilamentForceLaws, MotorHeadsSetUnbindingAndWalking) {
+  MotorType m;  // k_h = 0.2/s, k_off = 1.7/s per head, beta = 2/pN
+  const int n = 20;
+  const double rho = 0.2 / 1.9;
+  const double lifetime = (std::pow(1.0 + 0.2 / 1.7, n) - 1.0) / (n * 0.2);
+  EXPECT_NEAR(FilamentChemistry::catchFactor(m, 0.0, n) * m.off_rate, 1.0 / lifetime, 1e-12);
+  EXPECT_NEAR(FilamentChemistry::catchFactor(m, -3.0, n), FilamentChemistry::catchFactor(m, 0.0, n), 1e-15);
+  EXPECT_NEAR(1.0 / (FilamentChemistry::catchFactor(m, 0.0, 15) * m.off_rate), 1.4345, 1e-4);  // s, 15 heads
+  EXPECT_NEAR(1.0 / (FilamentChemistry::catchFactor(m, 0.0, 30) * m.off_rate), 4.5213, 1e-4);  // s, 30 heads
+  const double f = 20.0, nb = rho * n + 2.0 * f / n;
+  EXPECT_NEAR(FilamentChemistry::boundHeads(m, f, n), nb, 1e-12);
+  EXPECT_NEAR(FilamentChemistry::catchFactor(m, f, n), FilamentChemistry::catchFactor(m, 0.0, n) * std::exp(-f / (nb * 12.62)),
+              1e-12);
+  EXPECT_NEAR(FilamentChemistry::walkFactor(m, 0.0, n), (1.0 - rho) / rho, 1e-12);  // 8.5 for NMIIA
+  EXPECT_NEAR(FilamentChemistry::walkFactor(m, f, n), (n - nb) / nb * (90.0 - f) / (90.0 + f / 0.2), 1e-12);
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 95.0, n), 0.0);
+  // Without heads nothing changes.
+  EXPECT_EQ(FilamentChemistry::catchFactor(m, 12.62, 0), FilamentChemistry::catchFactor(m, 12.62));
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 45.0, 0), FilamentChemistry::walkFactor(m, 45.0));
+}
+
 // A filament growing straight at another one's side feels the excluded-volume push on its
 // plus end: load k (d0 - d), ratchet factor exp(-load delta / kT).
 TEST(FilamentRatchetLoad, IncludesExcludedVolumeFromOtherFilaments) {
@@ -98,6 +123,39 @@ TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {
               mo.standardError, m.walk_rate * T);
   EXPECT_NEAR(mo.mean, m.walk_rate * T, 4.0 * mo.standardError);
   EXPECT_NEAR(mo.variance, m.walk_rate * T, 0.35 * m.walk_rate * T);  // Poisson steps
+}
+
+// With heads, an unloaded motor end walks at walk_rate (1 - rho)/rho, whatever its head
+// count (100 heads here: the ensemble then practically never detaches, 3e-4 /s), and the
+// network counts the steps.
+TEST(FilamentMotor, WithHeadsWalksAtTheEnsembleRate) {
+  FilamentConfig config = walkingMotorOnInertActin(0.2);
+  MotorType& m = config.motors[0];
+  m.off_rate = 1.7;  // one head's; the duty ratio is 0.2/1.9
+  m.heads_min = m.heads_max = 100;
+  const double rate = m.walk_rate * m.off_rate / m.head_binding_rate;  // 1.7 /s per end
+  const double T = 10.0;
+  std::vector<double> steps;
+  for (int run = 0; run < 20; ++run) {
+    Rig rig(6000.0, {1, 1, 1}, {{"G", 0.0}, {"M", 0.0}}, {0, 0}, config, [&](FilamentNetwork& net) {
+      net.addFilament(makeStraightFilament(0, Vec3(200.0, 3000.0, 3000.0), Vec3::UnitX(), 2000, 40, 2.7));
+      net.addFilament(makeStraightFilament(0, Vec3(5600.0, 3200.0, 3000.0), -Vec3::UnitX(), 2000, 40, 2.7));
+      Binding b;
+      b.filament = {0, 1};
+      b.site = {10, 10};
+      b.heads = 100;
+      b.rest_length = (net.sitePosition(BinderKind::kMotor, 0, 1, 10) - net.sitePosition(BinderKind::kMotor, 0, 0, 10)).norm();
+      net.bind(BinderKind::kMotor, b);
+    }, 300 + run);
+    rig.engine->advance(T);
+    const Binding& b = rig.network->motors().front();
+    steps.push_back(static_cast<double>(b.site[0] + b.site[1] - 20));
+    EXPECT_EQ(rig.network->events().motor_steps, b.site[0] + b.site[1] - 20);
+  }
+  const auto mo = chemtest::moments(steps);
+  std::printf("[ measured ] steps per motor with heads in %g s: %.1f +- %.1f, expected %.1f\n", T, mo.mean,
+              mo.standardError, 2 * rate * T);
+  EXPECT_NEAR(mo.mean, 2 * rate * T, 4.0 * mo.standardError);
 }
 
 // A motor between two fixed antiparallel filaments walks its ends apart, stretching

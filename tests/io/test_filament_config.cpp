@@ -236,6 +236,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadOverride{"motor.0.species=\"AA\"", "motor.0.species"},  // the linker's species
         BadOverride{"motor.0.max_distance=175.0", "motor.0.max_distance"},
         BadOverride{"motor.0.site_spacing=-3", "motor.0.site_spacing"},
+        BadOverride{"motor.0.heads_min=10", "motor.0.heads_max"},  // one without the other
+        BadOverride{"motor.0.head_load=nan", "motor.0.head_load"},
+        BadOverride{"motor.0.head_load=-1.0", "motor.0.head_load"},
+        BadOverride{"motor.0.head_binding_rate=0.0", "motor.0.head_binding_rate"},
         BadOverride{"brancher.0.angle=180.0", "brancher.0.angle"},
         BadOverride{"brancher.0.angle=0.0", "brancher.0.angle"},
         BadOverride{"brancher.0.filament_type=\"nope\"", "brancher.0.filament_type"},
