@@ -1,9 +1,13 @@
 """ctest driver: runs every example briefly (at most two snapshot intervals), opens its
 trajectory.xdmf in ParaView with check_xdmf.py and renders it with
-tools/paraview_picture.py (pvpython under xvfb-run).
+tools/paraview_picture.py (pvpython on one virtual X server, started here and waited
+for: an xvfb-run per call raced its own server start on a loaded machine, and a
+picture then aborted).
 
-Usage: python3 open_examples.py CORTEX PVPYTHON XVFB_RUN EXAMPLES_DIR WORKDIR
+Usage: python3 open_examples.py CORTEX PVPYTHON XVFB EXAMPLES_DIR WORKDIR
 """
+import contextlib
+import os
 import pathlib
 import shutil
 import subprocess
@@ -18,7 +22,38 @@ def short_end_time(config):
     return end if interval is None else min(end, 2.0 * float(interval))
 
 
-def main(cortex, pvpython, xvfb_run, examples, workdir):
+@contextlib.contextmanager
+def virtual_display(xvfb):
+    """An X server for the block; DISPLAY set. -displayfd reports the display number
+    once the server accepts connections."""
+    read, write = os.pipe()
+    server = subprocess.Popen([xvfb, "-displayfd", str(write), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+                              pass_fds=(write,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write)
+    with os.fdopen(read) as pipe:
+        number = pipe.readline().strip()
+    if not number:
+        server.kill()
+        raise RuntimeError(f"{xvfb} did not start")
+    previous = os.environ.get("DISPLAY")
+    os.environ["DISPLAY"] = f":{number}"
+    try:
+        yield
+    finally:
+        server.terminate()
+        server.wait()
+        if previous is None:
+            os.environ.pop("DISPLAY", None)
+        else:
+            os.environ["DISPLAY"] = previous
+
+
+def main(cortex, pvpython, xvfb, examples, workdir):
+    with virtual_display(xvfb):
+        return check_examples(cortex, pvpython, examples, workdir)
+
+
+def check_examples(cortex, pvpython, examples, workdir):
     work = pathlib.Path(workdir)
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
@@ -34,14 +69,14 @@ def main(cortex, pvpython, xvfb_run, examples, workdir):
         if run.returncode != 0:
             failed.append(f"{example.name}: cortex run exited {run.returncode}: {run.stderr.strip()}")
             continue
-        check = subprocess.run([xvfb_run, "-a", pvpython, str(checker), str(out)], capture_output=True, text=True)
+        check = subprocess.run([pvpython, str(checker), str(out)], capture_output=True, text=True)
         # pvpython's own chatter goes to stderr; the checker prints one summary line.
         lines = [line for line in check.stdout.splitlines() if line.strip()]
         print("\n".join(lines) if lines else f"{example.name}: no output; stderr: {check.stderr[-2000:]}")
         if check.returncode != 0:
             failed.append(f"{example.name}: ParaView check exited {check.returncode}")
         picture = out / "paraview.png"
-        render = subprocess.run([xvfb_run, "-a", pvpython, str(tools / "paraview_picture.py"), str(out), "-o",
+        render = subprocess.run([pvpython, str(tools / "paraview_picture.py"), str(out), "-o",
                                  str(picture), "--size", "400,300"], capture_output=True, text=True)
         if render.returncode != 0 or not picture.is_file() or picture.stat().st_size < 5000:
             failed.append(f"{example.name}: paraview_picture.py exited {render.returncode}: {render.stderr[-2000:]}")
