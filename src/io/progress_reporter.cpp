@@ -54,25 +54,28 @@ double ProgressReporter::wallSeconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-bool ProgressReporter::due(double wall, double last, double interval, bool relaxing) const {
+ProgressReporter::Due ProgressReporter::due(double wall, bool now, bool relaxing) const {
   // A relaxation is reported only once it has run a whole interval without a window ending.
-  return wall - last >= interval && (!relaxing || wall - last_window_ >= interval);
+  const auto passed = [&](double last, double interval) {
+    return now || (wall - last >= interval && (!relaxing || wall - last_window_ >= interval));
+  };
+  return {live_ && passed(last_live_, kLiveInterval), !live_ && interval_ > 0 && passed(last_plain_, interval_),
+          passed(last_log_, kLogInterval)};
 }
 
-void ProgressReporter::show(const std::string& line, bool now, bool relaxing) {
-  const double wall = wallSeconds();
-  if (live_ && (now || due(wall, last_live_, kLiveInterval, relaxing))) {
+void ProgressReporter::show(const std::string& line, const Due& due, double wall) {
+  if (due.live) {
     std::fprintf(stderr, "\r%-150s", line.c_str());
     std::fflush(stderr);
     line_open_ = true;
     last_live_ = wall;
   }
-  if (!live_ && interval_ > 0 && (now || due(wall, last_plain_, interval_, relaxing))) {
+  if (due.plain) {
     std::fprintf(stderr, "cortex: %s\n", line.c_str());
     std::fflush(stderr);
     last_plain_ = wall;
   }
-  if (now || due(wall, last_log_, kLogInterval, relaxing)) {
+  if (due.log) {
     spdlog::info("{}", line);
     last_log_ = wall;
   }
@@ -88,20 +91,18 @@ void ProgressReporter::window(const System& system, const MinimizationResult& re
   line += throughput(system, wall);
   if (system.hasMechanics())
     line += fmt::format(" | last relaxation {} iterations, max force {:.3g} pN", result.iterations, result.max_force);
-  show(line, done, false);
+  show(line, due(wall, done, false), wall);
   last_window_ = wall;
 }
 
 void ProgressReporter::relaxing(const System& system, const std::string& what, const MinimizerProgress& p) {
   const double wall = wallSeconds();
-  // Cheap when no channel is due: this runs every minimizer iteration.
-  if (!(live_ && due(wall, last_live_, kLiveInterval, true)) && !(!live_ && interval_ > 0 && due(wall, last_plain_, interval_, true)) &&
-      !due(wall, last_log_, kLogInterval, true))
-    return;
+  const Due channels = due(wall, false, true);
+  if (!channels.any()) return;  // the common case: this runs every minimizer iteration
   show(fmt::format("t = {:.4g} / {:.4g} s | wall {} | relaxing {}: {} iterations, max force {:.3g} pN (tolerance "
                    "{:.3g} pN)",
                    system.time(), end_time_, duration(wall), what, p.iterations, p.max_force, p.tolerance),
-       false, true);
+       channels, wall);
 }
 
 void ProgressReporter::finish() {

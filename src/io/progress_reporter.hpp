@@ -43,11 +43,14 @@ class ProgressReporter {
 
  private:
   double wallSeconds() const;
-  // Whether a channel last written at `last` is due; a relaxation line also needs a
-  // whole interval since the last window ended.
-  bool due(double wall, double last, double interval, bool relaxing) const;
-  // Shows `line` on each channel that is due (all of them when `now`).
-  void show(const std::string& line, bool now, bool relaxing);
+  // Which channels to write at `wall`: each whose interval has passed (all when `now`); a
+  // relaxation line also needs a whole interval since the last window ended.
+  struct Due {
+    bool live, plain, log;
+    bool any() const { return live || plain || log; }
+  };
+  Due due(double wall, bool now, bool relaxing) const;
+  void show(const std::string& line, const Due& due, double wall);
 
   double end_time_;
   bool live_;

@@ -18,9 +18,12 @@
 #include "io/observables.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/mesh_file.hpp"
+#include "test_text.hpp"
 
 namespace cortex::cli_test {
 namespace {
+
+using cortex::testing::countOccurrences;
 
 // A 200 nm vesicle (368 vertices) shrinking osmotically: 10 windows of 0.02 s up to 0.2 s.
 // `mesher_line` may pick another mesher (e.g. "mesher = \"icosphere\"").
@@ -51,12 +54,6 @@ reduced_volume = [[0.0, 1.0], [0.2, 0.9]]
 
 bool bitIdentical(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
-int countOccurrences(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (std::size_t pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1)) ++n;
-  return n;
 }
 
 TEST(RunOutputs, WritesTheContractOutputs) {
@@ -166,7 +163,7 @@ TEST(RunOutputs, WritesTheContractOutputs) {
 
   // The XDMF indexes every snapshot in the HDF5 file beside it.
   const std::string xdmf = readFile(out / "trajectory.xdmf");
-  EXPECT_EQ(countOccurrences(xdmf, "<Time "), static_cast<int>(snaps.size()));
+  EXPECT_EQ(countOccurrences(xdmf, "<Time "), snaps.size());
   EXPECT_NE(xdmf.find("snapshots/000000.h5:/membranes/vesicle/vertices"), std::string::npos);
 }
 
@@ -234,7 +231,7 @@ void expectResumeIsBitIdentical(const std::function<std::string(double)>& config
     EXPECT_EQ(sa[i].triangles, sb[i].triangles) << "snapshot " << i;
     EXPECT_TRUE(bitIdentical(sa[i].vertices, sb[i].vertices)) << "snapshot " << i;
   }
-  EXPECT_EQ(countOccurrences(readFile(b / "trajectory.xdmf"), "<Time "), static_cast<int>(sa.size()));
+  EXPECT_EQ(countOccurrences(readFile(b / "trajectory.xdmf"), "<Time "), sa.size());
   // The observables table too (bitwise: it holds NaN), but for the wall clock.
   const auto table = [](const fs::path& outdir) {
     const h5::File index = h5::File::openReadOnly(outdir / "trajectory.h5");
@@ -364,7 +361,7 @@ TEST(RunFailure, KeepsLastGoodSnapshotAndCheckpoint) {
     EXPECT_LT(s.time, 0.11 + 0.02) << s.group;  // nothing from the diverged windows
     for (double x : s.vertices) ASSERT_TRUE(std::isfinite(x) && std::abs(x) < 1e4) << s.group;
   }
-  EXPECT_EQ(countOccurrences(readFile(out / "trajectory.xdmf"), "<Time "), static_cast<int>(snaps.size()));
+  EXPECT_EQ(countOccurrences(readFile(out / "trajectory.xdmf"), "<Time "), snaps.size());
 
   // The checkpoint is the last good state, and a run can continue from it with the
   // offending parameter corrected.

@@ -13,11 +13,13 @@
 #include "io/hdf5_file.hpp"
 #include "io/trajectory_writer.hpp"
 #include "io/xdmf.hpp"
+#include "test_text.hpp"
 
 namespace cortex {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::countOccurrences;
 
 // A fresh directory per test, removed afterwards.
 class TrajectoryWriterTest : public ::testing::Test {
@@ -60,14 +62,6 @@ Frame makeFrame(int k) {
   return frame;
 }
 
-std::size_t countOf(const std::string& text, const std::string& pattern) {
-  std::size_t count = 0;
-  for (auto at = text.find(pattern); at != std::string::npos; at = text.find(pattern, at + 1)) {
-    ++count;
-  }
-  return count;
-}
-
 void expectSnapshot(const h5::File& file, std::int64_t index, const Frame& frame) {
   const std::string group = snapshotGroup(index);
   EXPECT_EQ(file.attributeDouble(group, "time"), frame.time);
@@ -104,8 +98,8 @@ TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
 
   const std::string xml = readXdmf();
   EXPECT_NE(xml.find("<Xdmf Version=\"2.0\">"), std::string::npos);
-  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 2 + 2 * 3);  // the run, a series per membrane, 3 snapshots each
-  EXPECT_EQ(countOf(xml, "<Grid "), countOf(xml, "</Grid>"));
+  EXPECT_EQ(countOccurrences(xml, "<Grid "), 1u + 2 + 2 * 3);  // the run, a series per membrane, 3 snapshots each
+  EXPECT_EQ(countOccurrences(xml, "<Grid "), countOccurrences(xml, "</Grid>"));
   for (int k = 0; k < 3; ++k) {
     const Frame frame = makeFrame(k);
     EXPECT_NE(xml.find(fmt::format("<Time Value=\"{}\"/>", frame.time)), std::string::npos);
@@ -127,7 +121,7 @@ TEST(Xdmf, EscapesNamesAndHandlesNoSnapshots) {
   const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}, std::nullopt, std::nullopt}});
   EXPECT_NE(xml.find("Name=\"a&amp;b\""), std::string::npos);
   EXPECT_NE(xml.find(">snapshots/000007.h5:/membranes/a&amp;b/mean_curvature<"), std::string::npos);
-  EXPECT_EQ(countOf(trajectoryXdmf({}), "<Grid "), 1);
+  EXPECT_EQ(countOccurrences(trajectoryXdmf({}), "<Grid "), 1u);
 }
 
 TEST_F(TrajectoryWriterTest, AppendDropsSnapshotsFromFirstIndexAndContinues) {
@@ -158,7 +152,7 @@ TEST_F(TrajectoryWriterTest, AppendDropsSnapshotsFromFirstIndexAndContinues) {
 
   // The rebuilt XDMF still describes the retained snapshots with their own sizes.
   const std::string xml = readXdmf();
-  EXPECT_EQ(countOf(xml, "<Grid "), 1 + 2 + 2 * 3);
+  EXPECT_EQ(countOccurrences(xml, "<Grid "), 1u + 2 + 2 * 3);
   EXPECT_NE(xml.find("Dimensions=\"5 3\">snapshots/000001.h5:/membranes/cell/vertices<"), std::string::npos);
   EXPECT_NE(xml.find("Dimensions=\"9 3\">snapshots/000002.h5:/membranes/cell/vertices<"), std::string::npos);
   EXPECT_EQ(trajectoryRunId(dir_), "run");

@@ -12,17 +12,13 @@
 #include "io/hdf5_file.hpp"
 #include "io/trajectory_writer.hpp"
 #include "io/xdmf.hpp"
+#include "test_text.hpp"
 
 namespace cortex {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using testing::countOccurrences;
 
 TEST(XdmfFilaments, GridsWithElementsOnly) {
   XdmfSnapshot s{3, 0.5, {}, XdmfFilaments{12, 9, 0, 4, 0}, std::nullopt};
@@ -41,7 +37,7 @@ TEST(XdmfFilaments, GridsWithElementsOnly) {
 
   const std::string empty = trajectoryXdmf({XdmfSnapshot{0, 0.0, {}, XdmfFilaments{}, std::nullopt}});
   EXPECT_EQ(empty.find("filaments/"), std::string::npos);
-  EXPECT_EQ(occurrences(empty, "<Grid "), 1u);  // the run's collection: no object has elements
+  EXPECT_EQ(countOccurrences(empty, "<Grid "), 1u);  // the run's collection: no object has elements
 }
 
 TEST(XdmfFilaments, WriterWritesEmptyDatasetsAndRebuildsOnResume) {

@@ -13,17 +13,13 @@
 #include "io/hdf5_file.hpp"
 #include "io/trajectory_writer.hpp"
 #include "io/xdmf.hpp"
+#include "test_text.hpp"
 
 namespace cortex {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using testing::countOccurrences;
 
 // The text between the opening of object `name`'s temporal collection and its end.
 std::string collection(const std::string& xml, const std::string& name) {
@@ -50,19 +46,19 @@ TEST(XdmfLayout, OneCollectionPerObjectWithItsStepsOnly) {
   EXPECT_EQ(xml.find(R"(Name="motors")"), std::string::npos);  // never any
   // Each uniform grid carries the object's own name and its time.
   const std::string cell = collection(xml, "cell");
-  EXPECT_EQ(occurrences(cell, R"(<Grid Name="cell" GridType="Uniform">)"), 3u);
-  EXPECT_EQ(occurrences(cell, "<Time "), 3u);
-  EXPECT_EQ(occurrences(collection(xml, "nucleus"), "<Time "), 1u);
+  EXPECT_EQ(countOccurrences(cell, R"(<Grid Name="cell" GridType="Uniform">)"), 3u);
+  EXPECT_EQ(countOccurrences(cell, "<Time "), 3u);
+  EXPECT_EQ(countOccurrences(collection(xml, "nucleus"), "<Time "), 1u);
   const std::string linkers = collection(xml, "linkers");
-  EXPECT_EQ(occurrences(linkers, "<Time "), 1u);  // steps without linkers left out
+  EXPECT_EQ(countOccurrences(linkers, "<Time "), 1u);  // steps without linkers left out
   EXPECT_NE(linkers.find(R"(<Time Value="0.5"/>)"), std::string::npos);
   const std::string branches = collection(xml, "branch_points");
-  EXPECT_EQ(occurrences(branches, "<Time "), 2u);
+  EXPECT_EQ(countOccurrences(branches, "<Time "), 2u);
   EXPECT_NE(branches.find(R"(TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="1")"), std::string::npos);
   EXPECT_NE(branches.find(R"(Dimensions="1 3">snapshots/000002.h5:/filaments/branch_points<)"), std::string::npos);
   // Compartments: a 3 x 4 x 5 point structured grid, one cell field per species.
   const std::string grid = collection(xml, "compartments");
-  EXPECT_EQ(occurrences(grid, "<Time "), 2u);
+  EXPECT_EQ(countOccurrences(grid, "<Time "), 2u);
   EXPECT_NE(grid.find(R"(<Topology TopologyType="3DSMesh" Dimensions="3 4 5"/>)"), std::string::npos);
   EXPECT_NE(grid.find(R"(Dimensions="60 3">compartments.h5:/points<)"), std::string::npos);
   EXPECT_NE(grid.find(R"(<Attribute Name="B" AttributeType="Scalar" Center="Cell">)"), std::string::npos);
