@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/constants.hpp"
+#include "interact/triangle_queries.hpp"
 
 namespace cortex {
 namespace {
@@ -26,6 +26,11 @@ double valueOf(const T& x) {
   }
 }
 
+template <class T>
+Vec3 valuesOf(const V3<T>& x) {
+  return Vec3(valueOf(x[0]), valueOf(x[1]), valueOf(x[2]));
+}
+
 // atan(z)/z, by its series where z is small (z = 0 included).
 template <class T>
 T atanOverArgument(const T& z) {
@@ -34,6 +39,13 @@ T atanOverArgument(const T& z) {
     return 1.0 - z2 * (1.0 / 3.0 - z2 * (1.0 / 5.0 - z2 / 7.0));  // next term z⁸/9 < 1e-25
   }
   return atan2(z, T(1.0)) / z;
+}
+
+// atan(t2/s) − atan(t1/s) for s > 0 as one arctangent: the two are close to ±π/2 when
+// the point is far along the edge's line, and their difference would lose its digits.
+template <class T>
+T angleBetween(const T& t1, const T& t2, const T& s) {
+  return atan2(T(s * (t2 - t1)), T(s * s + t1 * t2));
 }
 
 template <class T>
@@ -46,7 +58,6 @@ T integral(const V3<T>& p, const V3<T>& a, const V3<T>& b, const V3<T>& c) {
   const T h2 = h * h;
   const std::array<const V3<T>*, 4> corner{&a, &b, &c, &a};
   std::array<T, 3> d, t1, t2;
-  double reach2 = 0.0;  // largest squared in-plane distance from q to a vertex
   for (int i = 0; i < 3; ++i) {
     const V3<T>& A = *corner[i];
     const V3<T>& B = *corner[i + 1];
@@ -54,44 +65,40 @@ T integral(const V3<T>& p, const V3<T>& a, const V3<T>& b, const V3<T>& c) {
     d[i] = (p - A).dot(n.cross(e));  // positive on the triangle's side (counter-clockwise about n)
     t1[i] = (A - p).dot(e);
     t2[i] = (B - p).dot(e);
-    const V3<T> in_plane = A - p + h * n;
-    reach2 = std::max(reach2, valueOf(in_plane.squaredNorm()));
   }
-  if (valueOf(h2) >= reach2) {
-    // Far from the plane: the edge terms do not cancel much.
+  // Which form: by the in-plane distance δ from the foot q to the triangle.
+  const Vec3 q = valuesOf(p) - valueOf(h) * valuesOf(n);
+  const double delta2 = (closestPointOnTriangle(q, valuesOf(a), valuesOf(b), valuesOf(c)).point - q).squaredNorm();
+  // A foot within rounding of the triangle counts as on it (the split form needs q
+  // truly outside).
+  const double on_it = 1e-24 * valueOf(twice_area);
+  if (!(delta2 > valueOf(h2) && delta2 > on_it)) {
+    // q over the triangle or within h of it: the edge terms add up without cancelling
+    // (each is of the size of the result), and none is singular.
+    if (!(valueOf(h2) > on_it)) return T(std::numeric_limits<double>::infinity());  // p on the triangle
     T sum(0.0);
     for (int i = 0; i < 3; ++i) {
       const T s = sqrt(d[i] * d[i] + h2);
-      sum += d[i] / (2.0 * h2 * s) * (atan2(t2[i], s) - atan2(t1[i], s));
+      sum += d[i] / (2.0 * h2 * s) * angleBetween(t1[i], t2[i], s);
     }
     return sum;
   }
-  // Near the plane: the winding part apart, exactly.
-  bool outside = false, boundary = false;
+  // q outside by more than h: the terms' 1/h² parts cancel (the winding number is 0), so
+  // they are taken out of each term. Every vertex is more than h from q, which keeps
+  // s|d| + t² ≥ h²/2 in each term: no singular part.
+  T sum(0.0);
   for (int i = 0; i < 3; ++i) {
-    outside = outside || valueOf(d[i]) < 0.0;
-    boundary = boundary || valueOf(d[i]) == 0.0;
-  }
-  double winding = outside ? 0.0 : 2.0 * constants::kPi;
-  if (!outside && boundary) {
-    // q on an edge or a vertex: the angle the rest of the boundary subtends at q.
-    winding = 0.0;
-    for (int i = 0; i < 3; ++i)
-      if (valueOf(d[i]) > 0.0) winding += std::atan2(valueOf(t2[i]), valueOf(d[i])) - std::atan2(valueOf(t1[i]), valueOf(d[i]));
-  }
-  // In the plane (h = 0) only the edge terms remain outside the triangle; on it, infinity.
-  if (valueOf(h2) == 0.0 && winding > 0.0) return T(std::numeric_limits<double>::infinity());
-  T sum = winding > 0.0 ? T(winding / (2.0 * h2)) : T(0.0);
-  for (int i = 0; i < 3; ++i) {
-    if (valueOf(d[i]) == 0.0) continue;  // sgn(d) = 0
-    const T D = abs(d[i]);
+    // sgn(d)·f(|d|) with f(0) = 0 (t1, t2 on one side of q when d = 0): an odd function
+    // of d whose derivative at 0 is f'(0), which |d| would lose there.
+    const bool positive = valueOf(d[i]) >= 0.0;
+    const T D = positive ? d[i] : T(-d[i]);
     const T s = sqrt(D * D + h2);
-    const auto G = [&](const T& t) -> T {  // T, not an AutoDiff expression of temporaries
+    const auto atanPart = [&](const T& t) -> T {  // T, not an AutoDiff expression of temporaries
       const T w = -t / ((D + s) * (s * D + t * t));  // z / h²
-      return -atan2(t, s) / (s * (D + s)) + w * atanOverArgument(T(w * h2));
+      return w * atanOverArgument(T(w * h2));
     };
-    const T edge = 0.5 * (G(t2[i]) - G(t1[i]));
-    sum += valueOf(d[i]) > 0.0 ? edge : T(-edge);
+    const T edge = 0.5 * (atanPart(t2[i]) - atanPart(t1[i]) - angleBetween(t1[i], t2[i], s) / (s * (D + s)));
+    sum += positive ? edge : T(-edge);
   }
   return sum;
 }

@@ -5,6 +5,8 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "filament/filament_terms.hpp"
+#include "interact/membrane_bead_exclusion.hpp"
+#include "interact/membrane_crossing.hpp"
 #include "membrane/membrane_terms.hpp"
 #include "sim/chemistry_builder.hpp"
 #include "sim/confinement.hpp"
@@ -52,7 +54,16 @@ System::System(const Config& config, const SystemState* restored) {
   for (auto& m : membranes_) addMembraneTerms(*m, force_field_);
   FilamentTerms filament_terms;
   if (filaments_) filament_terms = addFilamentTerms(*filaments_, force_field_);
+  if (config.membrane_filament && filaments_)
+    for (auto& m : membranes_)
+      coupling_terms_.push_back(
+          &force_field_.add(std::make_unique<MembraneBeadExclusion>(*m, *filaments_, *config.membrane_filament)));
   if (config.chemistry) buildChemistry(config, restored, filament_terms);
+
+  for (const MembraneBeadExclusion* term : coupling_terms_)
+    if (const auto crossing = findMembraneCrossing(term->membrane(), term->network()))
+      throw InputError(fmt::format("{}: at the start, {}: place the filaments on one side of it", config.source,
+                                   crossing->describe(term->membrane())));
 
   if (restored) {
     time_ = restored->time;

@@ -1,0 +1,224 @@
+#include "interact/membrane_bead_exclusion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "interact/triangle_inverse_fourth.hpp"
+#include "interact/triangle_queries.hpp"
+
+namespace cortex {
+namespace {
+
+// The skin of the Verlet list, as a fraction of the cut-off: larger lists fewer rebuilds.
+constexpr double kSkinFraction = 0.5;
+// Pairs fade out smoothly from this fraction of the cut-off to the cut-off.
+constexpr double kFadeStart = 0.5;
+
+// A cell of a uniform grid as one sortable key (21 bits per axis, offset to be positive).
+std::uint64_t cellKey(std::int64_t i, std::int64_t j, std::int64_t k) {
+  constexpr std::int64_t kBias = std::int64_t{1} << 20;
+  const auto field = [](std::int64_t v) { return static_cast<std::uint64_t>(std::clamp<std::int64_t>(v + kBias, 0, 2 * kBias - 1)); };
+  return (field(i) << 42) | (field(j) << 21) | field(k);
+}
+
+}  // namespace
+
+MembraneBeadExclusion::MembraneBeadExclusion(const Membrane& membrane, const FilamentNetwork& network,
+                                             MembraneBeadExclusionParams params)
+    : membrane_(membrane), network_(network), params_(params), skin_(kSkinFraction * params.cutoff) {}
+
+const std::string& MembraneBeadExclusion::name() const {
+  static const std::string kName = "filament_exclusion";
+  return kName;
+}
+
+void MembraneBeadExclusion::gatherPositions(const Evaluation& e) {
+  // Which beads: chosen again whenever the network's layout changed (growth added a bead,
+  // a branch a filament).
+  if (!built_ || network_.layout().version != built_layout_) {
+    beads_.clear();
+    const auto& filaments = network_.filaments();
+    for (std::size_t f = 0; f < filaments.size(); ++f) {
+      const Index first = network_.firstBead(static_cast<Index>(f));
+      const Index last = first + static_cast<Index>(filaments[f].beads.size()) - 1;
+      switch (params_.beads) {
+        case ExclusionBeads::kAll:
+          for (Index b = first; b <= last; ++b) beads_.push_back(b);
+          break;
+        case ExclusionBeads::kEnds:
+          beads_.push_back(first);
+          if (last != first) beads_.push_back(last);
+          break;
+        case ExclusionBeads::kPlusEnds: beads_.push_back(last); break;
+      }
+    }
+    built_ = false;
+  }
+  const Index nv = membrane_.mesh().numVertices();
+  vertex_x_.resize(static_cast<std::size_t>(nv));
+  if (!e.alone || e.alone == &membrane_) {
+    const double* x = e.x + 3 * membrane_.offset();
+    for (Index v = 0; v < nv; ++v) vertex_x_[v] = Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  } else {
+    vertex_x_ = membrane_.mesh().positions();
+  }
+  bead_x_.resize(beads_.size());
+  const double* x = e.x + 3 * network_.offset();
+  std::vector<double> stored;
+  if (e.alone && e.alone != &network_) {
+    stored.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+    network_.gather(stored.data());
+    x = stored.data();
+  }
+  for (std::size_t i = 0; i < beads_.size(); ++i) {
+    const double* b = x + 3 * beads_[i];
+    bead_x_[i] = Vec3(b[0], b[1], b[2]);
+  }
+}
+
+bool MembraneBeadExclusion::listIsStale() const {
+  if (!built_ || membrane_.connectivityVersion() != built_connectivity_ ||
+      built_vertex_x_.size() != vertex_x_.size() || built_bead_x_.size() != bead_x_.size())
+    return true;
+  double vertex_move = 0.0, bead_move = 0.0;
+  for (std::size_t v = 0; v < vertex_x_.size(); ++v)
+    vertex_move = std::max(vertex_move, (vertex_x_[v] - built_vertex_x_[v]).squaredNorm());
+  for (std::size_t b = 0; b < bead_x_.size(); ++b)
+    bead_move = std::max(bead_move, (bead_x_[b] - built_bead_x_[b]).squaredNorm());
+  return !(std::sqrt(vertex_move) + std::sqrt(bead_move) < skin_);
+}
+
+void MembraneBeadExclusion::rebuild() {
+  ++rebuilds_;
+  built_ = true;
+  built_connectivity_ = membrane_.connectivityVersion();
+  built_layout_ = network_.layout().version;
+  built_vertex_x_ = vertex_x_;
+  built_bead_x_ = bead_x_;
+  pairs_.clear();
+  const auto& triangles = membrane_.topology().triangles;
+  const double reach = params_.cutoff + skin_;
+  // Triangles by the cell of their centroid. A bead within `reach` of a triangle is
+  // within reach + (the triangle's largest centroid–vertex distance) of its centroid, so
+  // with cells that large the 27 cells about the bead's hold every candidate.
+  std::vector<Vec3> centroid(triangles.size());
+  double spread = 0.0;
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const Tri& t = triangles[f];
+    centroid[f] = (vertex_x_[t[0]] + vertex_x_[t[1]] + vertex_x_[t[2]]) / 3.0;
+    for (int k = 0; k < 3; ++k) spread = std::max(spread, (vertex_x_[t[k]] - centroid[f]).norm());
+  }
+  const double cell = reach + spread;
+  if (!std::isfinite(cell) || !(cell > 0.0)) return;
+  const auto cellOf = [&](const Vec3& x) {
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(x[0] / cell)),
+                                       static_cast<std::int64_t>(std::floor(x[1] / cell)),
+                                       static_cast<std::int64_t>(std::floor(x[2] / cell))};
+  };
+  std::vector<std::pair<std::uint64_t, Index>> by_cell(triangles.size());
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const auto c = cellOf(centroid[f]);
+    by_cell[f] = {cellKey(c[0], c[1], c[2]), static_cast<Index>(f)};
+  }
+  std::sort(by_cell.begin(), by_cell.end());
+  const double reach2 = reach * reach;
+  for (std::size_t b = 0; b < bead_x_.size(); ++b) {
+    const Vec3& p = bead_x_[b];
+    if (!p.allFinite()) continue;  // the energy says so at evaluation
+    const auto c = cellOf(p);
+    for (std::int64_t i = -1; i <= 1; ++i)
+      for (std::int64_t j = -1; j <= 1; ++j)
+        for (std::int64_t k = -1; k <= 1; ++k) {
+          const std::uint64_t key = cellKey(c[0] + i, c[1] + j, c[2] + k);
+          auto it = std::lower_bound(by_cell.begin(), by_cell.end(), std::pair<std::uint64_t, Index>{key, 0});
+          for (; it != by_cell.end() && it->first == key; ++it) {
+            const Tri& t = triangles[it->second];
+            const Vec3 a = vertex_x_[t[0]], bb = vertex_x_[t[1]], cc = vertex_x_[t[2]];
+            if ((closestPointOnTriangle(p, a, bb, cc).point - p).squaredNorm() < reach2)
+              pairs_.push_back({it->second, static_cast<Index>(b)});
+          }
+        }
+  }
+  std::sort(pairs_.begin(), pairs_.end(),
+            [](const Pair& x, const Pair& y) { return x.face != y.face ? x.face < y.face : x.bead < y.bead; });
+}
+
+bool MembraneBeadExclusion::crossesSinceHeld(const Evaluation& e) {
+  const bool vertices_move = !e.alone || e.alone == &membrane_, beads_move = !e.alone || e.alone == &network_;
+  if (!vertices_move && !beads_move) return false;
+  const std::vector<Vec3>& held_vertices = membrane_.mesh().positions();
+  held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+  network_.gather(held_beads_.data());
+  if (held_vertices.size() != vertex_x_.size()) return false;  // remeshed since: nothing to compare with
+  const auto& triangles = membrane_.topology().triangles;
+  for (const Pair& pair : pairs_) {
+    const Tri& t = triangles[pair.face];
+    const Vec3& p = bead_x_[pair.bead];
+    const Vec3 a = vertex_x_[t[0]], b = vertex_x_[t[1]], c = vertex_x_[t[2]];
+    // Only where the bead lies over the triangle (its foot inside): elsewhere a change of
+    // side is the bead passing beside the triangle, seen by the neighbour it is over.
+    const Vec3 n = (b - a).cross(c - a);
+    const Vec3 q = p - (p - a).dot(n) / n.squaredNorm() * n;
+    if ((b - a).cross(q - a).dot(n) < 0 || (c - b).cross(q - b).dot(n) < 0 || (a - c).cross(q - c).dot(n) < 0) continue;
+    const Vec3 p0 = Eigen::Map<const Vec3>(held_beads_.data() + 3 * beads_[pair.bead]);
+    const Vec3 &a0 = held_vertices[t[0]], &b0 = held_vertices[t[1]], &c0 = held_vertices[t[2]];
+    const double side = (p - a).dot(n), held_side = (p0 - a0).dot((b0 - a0).cross(c0 - a0));
+    if ((side > 0 && held_side < 0) || (side < 0 && held_side > 0)) return true;
+  }
+  return false;
+}
+
+double MembraneBeadExclusion::evaluate(const Evaluation& e) {
+  gatherPositions(e);
+  for (const Vec3& p : bead_x_)
+    if (!p.allFinite()) return std::numeric_limits<double>::infinity();
+  if (listIsStale()) rebuild();
+  if (crossesSinceHeld(e)) return std::numeric_limits<double>::infinity();
+  double* vertex_gradient = e.gradient && (!e.alone || e.alone == &membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
+  double* bead_gradient = e.gradient && (!e.alone || e.alone == &network_) ? e.gradient + 3 * network_.offset() : nullptr;
+  const auto& triangles = membrane_.topology().triangles;
+  const double k = params_.stiffness, cutoff = params_.cutoff, fade_start = kFadeStart * cutoff;
+  double energy = 0.0;
+  active_pairs_ = 0;
+  for (const Pair& pair : pairs_) {
+    const Tri& t = triangles[pair.face];
+    const Vec3& a = vertex_x_[t[0]];
+    const Vec3& b = vertex_x_[t[1]];
+    const Vec3& c = vertex_x_[t[2]];
+    const Vec3& p = bead_x_[pair.bead];
+    const TrianglePoint nearest = closestPointOnTriangle(p, a, b, c);
+    const double distance = (p - nearest.point).norm();
+    if (distance >= cutoff) continue;
+    ++active_pairs_;
+    // The fade S(x) = 1 − 10x³ + 15x⁴ − 6x⁵ over x = (distance − fade_start)/(cutoff − fade_start):
+    // C² in the distance, which is C¹ in the positions, so the energy has continuous forces.
+    double fade = 1.0, fade_slope = 0.0;
+    if (distance > fade_start) {
+      const double width = cutoff - fade_start, x = (distance - fade_start) / width;
+      fade = 1.0 - x * x * x * (10.0 - x * (15.0 - 6.0 * x));
+      fade_slope = -30.0 * x * x * (1.0 - x) * (1.0 - x) / width;
+    }
+    if (!e.gradient) {
+      energy += k * fade * triangleInverseFourth(p, a, b, c);
+      continue;
+    }
+    const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c);
+    if (!std::isfinite(r.value)) return std::numeric_limits<double>::infinity();
+    energy += k * fade * r.value;
+    // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
+    const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
+    if (bead_gradient) {
+      const Vec3 g = k * fade * r.d_point + away;
+      for (int i = 0; i < 3; ++i) bead_gradient[3 * beads_[pair.bead] + i] += g[i];
+    }
+    if (vertex_gradient)
+      for (int v = 0; v < 3; ++v) {
+        const Vec3 g = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
+        for (int i = 0; i < 3; ++i) vertex_gradient[3 * t[v] + i] += g[i];
+      }
+  }
+  return energy;
+}
+
+}  // namespace cortex
