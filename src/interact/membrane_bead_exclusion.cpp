@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "interact/triangle_cells.hpp"
 #include "interact/triangle_inverse_fourth.hpp"
 #include "interact/triangle_queries.hpp"
 
@@ -14,13 +15,6 @@ namespace {
 constexpr double kSkinFraction = 0.5;
 // Pairs fade out smoothly from this fraction of the cut-off to the cut-off.
 constexpr double kFadeStart = 0.5;
-
-// A cell of a uniform grid as one sortable key (21 bits per axis, offset to be positive).
-std::uint64_t cellKey(std::int64_t i, std::int64_t j, std::int64_t k) {
-  constexpr std::int64_t kBias = std::int64_t{1} << 20;
-  const auto field = [](std::int64_t v) { return static_cast<std::uint64_t>(std::clamp<std::int64_t>(v + kBias, 0, 2 * kBias - 1)); };
-  return (field(i) << 42) | (field(j) << 21) | field(k);
-}
 
 }  // namespace
 
@@ -98,50 +92,68 @@ void MembraneBeadExclusion::rebuild() {
   built_bead_x_ = bead_x_;
   pairs_.clear();
   const auto& triangles = membrane_.topology().triangles;
-  const double reach = params_.cutoff + skin_;
-  // Triangles by the cell of their centroid. A bead within `reach` of a triangle is
-  // within reach + (the triangle's largest centroid–vertex distance) of its centroid, so
-  // with cells that large the 27 cells about the bead's hold every candidate.
-  std::vector<Vec3> centroid(triangles.size());
-  double spread = 0.0;
-  for (std::size_t f = 0; f < triangles.size(); ++f) {
-    const Tri& t = triangles[f];
-    centroid[f] = (vertex_x_[t[0]] + vertex_x_[t[1]] + vertex_x_[t[2]]) / 3.0;
-    for (int k = 0; k < 3; ++k) spread = std::max(spread, (vertex_x_[t[k]] - centroid[f]).norm());
-  }
-  const double cell = reach + spread;
-  if (!std::isfinite(cell) || !(cell > 0.0)) return;
-  const auto cellOf = [&](const Vec3& x) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(x[0] / cell)),
-                                       static_cast<std::int64_t>(std::floor(x[1] / cell)),
-                                       static_cast<std::int64_t>(std::floor(x[2] / cell))};
-  };
-  std::vector<std::pair<std::uint64_t, Index>> by_cell(triangles.size());
-  for (std::size_t f = 0; f < triangles.size(); ++f) {
-    const auto c = cellOf(centroid[f]);
-    by_cell[f] = {cellKey(c[0], c[1], c[2]), static_cast<Index>(f)};
-  }
-  std::sort(by_cell.begin(), by_cell.end());
-  const double reach2 = reach * reach;
+  const double reach = params_.cutoff + skin_, reach2 = reach * reach;
+  const TriangleCells cells(vertex_x_, triangles, reach);
   for (std::size_t b = 0; b < bead_x_.size(); ++b) {
     const Vec3& p = bead_x_[b];
-    if (!p.allFinite()) continue;  // the energy says so at evaluation
-    const auto c = cellOf(p);
-    for (std::int64_t i = -1; i <= 1; ++i)
-      for (std::int64_t j = -1; j <= 1; ++j)
-        for (std::int64_t k = -1; k <= 1; ++k) {
-          const std::uint64_t key = cellKey(c[0] + i, c[1] + j, c[2] + k);
-          auto it = std::lower_bound(by_cell.begin(), by_cell.end(), std::pair<std::uint64_t, Index>{key, 0});
-          for (; it != by_cell.end() && it->first == key; ++it) {
-            const Tri& t = triangles[it->second];
-            const Vec3 a = vertex_x_[t[0]], bb = vertex_x_[t[1]], cc = vertex_x_[t[2]];
-            if ((closestPointOnTriangle(p, a, bb, cc).point - p).squaredNorm() < reach2)
-              pairs_.push_back({it->second, static_cast<Index>(b)});
-          }
-        }
+    cells.near(p, [&](Index f) {
+      const Tri& t = triangles[f];
+      if ((closestPointOnTriangle(p, vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]]).point - p).squaredNorm() <
+          reach2)
+        pairs_.push_back({f, static_cast<Index>(b)});
+    });
   }
   std::sort(pairs_.begin(), pairs_.end(),
             [](const Pair& x, const Pair& y) { return x.face != y.face ? x.face < y.face : x.bead < y.bead; });
+}
+
+MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b,
+                                                                   const Vec3& c, bool gradient) const {
+  PairEnergy out;
+  const double k = params_.stiffness, cutoff = params_.cutoff, fade_start = kFadeStart * cutoff;
+  const TrianglePoint nearest = closestPointOnTriangle(p, a, b, c);
+  const double distance = (p - nearest.point).norm();
+  if (!(distance < cutoff)) return out;
+  out.active = true;
+  // The fade S(x) = 1 − 10x³ + 15x⁴ − 6x⁵ over x = (distance − fade_start)/(cutoff − fade_start):
+  // C² in the distance, which is C¹ in the positions, so the energy has continuous forces.
+  double fade = 1.0, fade_slope = 0.0;
+  if (distance > fade_start) {
+    const double width = cutoff - fade_start, x = (distance - fade_start) / width;
+    fade = 1.0 - x * x * x * (10.0 - x * (15.0 - 6.0 * x));
+    fade_slope = -30.0 * x * x * (1.0 - x) * (1.0 - x) / width;
+  }
+  if (!gradient) {
+    out.energy = k * fade * triangleInverseFourth(p, a, b, c);
+    return out;
+  }
+  const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c);
+  out.energy = k * fade * r.value;
+  if (!std::isfinite(r.value)) return out;
+  // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
+  const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
+  out.d_point = k * fade * r.d_point + away;
+  for (int v = 0; v < 3; ++v) out.d_vertices[v] = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
+  return out;
+}
+
+Vec3 MembraneBeadExclusion::forceAt(const Vec3& p, const TriangleCells& held) const {
+  const auto& x = membrane_.mesh().positions();
+  const auto& triangles = membrane_.topology().triangles;
+  std::vector<Index> faces;
+  held.near(p, [&](Index f) { faces.push_back(f); });
+  std::sort(faces.begin(), faces.end());  // summed in one order, whatever the cells'
+  Vec3 force = Vec3::Zero();
+  for (Index f : faces) {
+    const Tri& t = triangles[f];
+    const PairEnergy pe = pairEnergy(p, x[t[0]], x[t[1]], x[t[2]], true);
+    if (pe.active) force -= pe.d_point;
+  }
+  return force;
+}
+
+TriangleCells MembraneBeadExclusion::heldCells() const {
+  return TriangleCells(membrane_.mesh().positions(), membrane_.topology().triangles, params_.cutoff);
 }
 
 bool MembraneBeadExclusion::crossesSinceHeld(const Evaluation& e) {
@@ -178,45 +190,21 @@ double MembraneBeadExclusion::evaluate(const Evaluation& e) {
   double* vertex_gradient = e.gradient && (!e.alone || e.alone == &membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
   double* bead_gradient = e.gradient && (!e.alone || e.alone == &network_) ? e.gradient + 3 * network_.offset() : nullptr;
   const auto& triangles = membrane_.topology().triangles;
-  const double k = params_.stiffness, cutoff = params_.cutoff, fade_start = kFadeStart * cutoff;
   double energy = 0.0;
   active_pairs_ = 0;
   for (const Pair& pair : pairs_) {
     const Tri& t = triangles[pair.face];
-    const Vec3& a = vertex_x_[t[0]];
-    const Vec3& b = vertex_x_[t[1]];
-    const Vec3& c = vertex_x_[t[2]];
-    const Vec3& p = bead_x_[pair.bead];
-    const TrianglePoint nearest = closestPointOnTriangle(p, a, b, c);
-    const double distance = (p - nearest.point).norm();
-    if (distance >= cutoff) continue;
+    const PairEnergy pe = pairEnergy(bead_x_[pair.bead], vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]],
+                                     e.gradient != nullptr);
+    if (!pe.active) continue;
     ++active_pairs_;
-    // The fade S(x) = 1 − 10x³ + 15x⁴ − 6x⁵ over x = (distance − fade_start)/(cutoff − fade_start):
-    // C² in the distance, which is C¹ in the positions, so the energy has continuous forces.
-    double fade = 1.0, fade_slope = 0.0;
-    if (distance > fade_start) {
-      const double width = cutoff - fade_start, x = (distance - fade_start) / width;
-      fade = 1.0 - x * x * x * (10.0 - x * (15.0 - 6.0 * x));
-      fade_slope = -30.0 * x * x * (1.0 - x) * (1.0 - x) / width;
-    }
-    if (!e.gradient) {
-      energy += k * fade * triangleInverseFourth(p, a, b, c);
-      continue;
-    }
-    const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c);
-    if (!std::isfinite(r.value)) return std::numeric_limits<double>::infinity();
-    energy += k * fade * r.value;
-    // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
-    const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
-    if (bead_gradient) {
-      const Vec3 g = k * fade * r.d_point + away;
-      for (int i = 0; i < 3; ++i) bead_gradient[3 * beads_[pair.bead] + i] += g[i];
-    }
+    if (!std::isfinite(pe.energy)) return std::numeric_limits<double>::infinity();
+    energy += pe.energy;
+    if (bead_gradient)
+      for (int i = 0; i < 3; ++i) bead_gradient[3 * beads_[pair.bead] + i] += pe.d_point[i];
     if (vertex_gradient)
-      for (int v = 0; v < 3; ++v) {
-        const Vec3 g = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
-        for (int i = 0; i < 3; ++i) vertex_gradient[3 * t[v] + i] += g[i];
-      }
+      for (int v = 0; v < 3; ++v)
+        for (int i = 0; i < 3; ++i) vertex_gradient[3 * t[v] + i] += pe.d_vertices[v][i];
   }
   return energy;
 }

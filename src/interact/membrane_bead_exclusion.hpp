@@ -27,11 +27,13 @@
 // could otherwise land there.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "filament/filament_network.hpp"
+#include "interact/triangle_cells.hpp"
 #include "mech/energy_term.hpp"
 #include "membrane/membrane.hpp"
 
@@ -57,6 +59,11 @@ class MembraneBeadExclusion final : public EnergyTerm {
   double evaluate(const Evaluation& e) override;
 
   const MembraneBeadExclusionParams& params() const { return params_; }
+  // The force (pN) the membrane, where it is held, puts on a bead at p, with the cells of
+  // its triangles as held (heldCells(): rebuild after the membrane moved). For the
+  // ratchet between relaxations, when the membrane stands still.
+  Vec3 forceAt(const Vec3& p, const TriangleCells& held) const;
+  TriangleCells heldCells() const;
   const Membrane& membrane() const { return membrane_; }
   const FilamentNetwork& network() const { return network_; }
   // Diagnostics, for tests, benchmarks and the log.
@@ -68,6 +75,15 @@ class MembraneBeadExclusion final : public EnergyTerm {
   struct Pair {
     Index face, bead;  // bead: index into beads_ (the selected beads)
   };
+  // One bead and one triangle: inactive beyond the cut-off; the energy (pN·nm, infinite
+  // on the triangle) and, if asked, its gradient on the bead and the three vertices.
+  struct PairEnergy {
+    bool active = false;
+    double energy = 0.0;
+    Vec3 d_point = Vec3::Zero();
+    std::array<Vec3, 3> d_vertices{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  };
+  PairEnergy pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, bool gradient) const;
   // Positions of the vertices and selected beads at e (from e or from the bodies).
   void gatherPositions(const Evaluation& e);
   bool listIsStale() const;

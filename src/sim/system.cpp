@@ -112,7 +112,13 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_reactions));
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);
-    feedback_.push_back(std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_));
+    if (!coupling_terms_.empty()) {
+      end_loads_ = std::make_unique<MembraneEndLoads>(
+          std::vector<const MembraneBeadExclusion*>(coupling_terms_.begin(), coupling_terms_.end()));
+      filament_chemistry_->setEndLoadProbe(end_loads_.get());
+    }
+    feedback_.push_back(
+        std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_loads_.get()));
   }
 }
 

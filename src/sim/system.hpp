@@ -14,6 +14,7 @@
 #include "filament/filament_network.hpp"
 #include "filament/filament_terms.hpp"
 #include "interact/membrane_bead_exclusion.hpp"
+#include "interact/membrane_end_loads.hpp"
 #include "mech/force_field.hpp"
 #include "membrane/membrane.hpp"
 #include "sim/feedback.hpp"
@@ -79,6 +80,7 @@ class System {
   std::vector<Body*> bodies_;
   ForceField force_field_;
   std::vector<MembraneBeadExclusion*> coupling_terms_;
+  std::unique_ptr<MembraneEndLoads> end_loads_;  // with coupling terms and filament chemistry
   CompartmentGrid grid_;
   ChemistryModel chemistry_model_;
   std::unique_ptr<FilamentChemistry> filament_chemistry_;
