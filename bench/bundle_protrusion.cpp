@@ -8,10 +8,8 @@
 // (none here), plus force evaluations and reaction events.
 #include <benchmark/benchmark.h>
 
-#include <chrono>
-
 #include "io/config.hpp"
-#include "sim/simulation.hpp"
+#include "scenario_run.hpp"
 
 namespace cortex {
 namespace {
@@ -23,30 +21,16 @@ void BM_BundleProtrusion(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const Config config = loadConfig(CORTEX_SOURCE_DIR "/examples/bundle_protrusion.toml",
                                     {"filaments.0.count=" + std::to_string(n), "simulation.end_time=2.0"});
-  RunObserver quiet;
-  double simulated = 0.0, wall = 0.0;
-  RunCounters counters;
-  std::int64_t events = 0, evaluations = 0;
-  for (auto _ : state) {
-    auto system = std::make_unique<System>(config);
-    Simulation sim(*system, config.simulation, config.mechanics, quiet);
-    const auto start = std::chrono::steady_clock::now();
-    sim.run(true);
-    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    simulated += config.simulation.end_time;
-    counters = system->counters;
-    events = system->chemistry()->events();
-    evaluations = system->forceField().forceEvaluations();
-  }
-  const double per_hour = 3600.0 * simulated / wall;
+  const bench::ScenarioRun r = bench::runScenario(config, state);
+  const double per_hour = 3600.0 * r.simulated / r.wall;
   state.counters["sim_s_per_wall_h"] = per_hour;
   state.counters["x_thesis"] = per_hour / thesisRate(n);
-  state.counters["chemistry_s"] = counters.chemistry_seconds;
-  state.counters["minimization_s"] = counters.mechanics_seconds;
-  state.counters["remesh_s"] = counters.remesh_seconds;
-  state.counters["feedback_s"] = counters.feedback_seconds;
-  state.counters["events"] = static_cast<double>(events);
-  state.counters["force_evaluations"] = static_cast<double>(evaluations);
+  state.counters["chemistry_s"] = r.counters.chemistry_seconds;
+  state.counters["minimization_s"] = r.counters.mechanics_seconds;
+  state.counters["remesh_s"] = r.counters.remesh_seconds;
+  state.counters["feedback_s"] = r.counters.feedback_seconds;
+  state.counters["events"] = static_cast<double>(r.events);
+  state.counters["force_evaluations"] = static_cast<double>(r.force_evaluations);
 }
 BENCHMARK(BM_BundleProtrusion)->Arg(7)->Arg(10)->Arg(14)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 

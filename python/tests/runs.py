@@ -144,13 +144,14 @@ rate = 1.0
 """
 
 # Three anchored filaments growing into a patch under tension (examples/bundle_protrusion.toml,
-# small and short): 7 snapshots of a bulge that grows (it buckles soon after).
+# small and short): 9 snapshots of a bulge that grows (until, later, the bundle tips
+# over about its pinned minus ends).
 BUNDLE = """
 [simulation]
 seed = 2
-end_time = 0.3
+end_time = 0.2
 chemistry_window = 0.01
-snapshot_interval = 0.05
+snapshot_interval = 0.025
 
 [compartments]
 size = 250.0
