@@ -5,6 +5,7 @@
 // error and the crossing check finds a cylinder through a triangle.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "core/error.hpp"
@@ -87,6 +88,34 @@ TEST(MembraneFilamentSystem, APushedPatchAndTheFilamentComeToRestTogether) {
   for (const TermEnergy& e : system.forceField().breakdown(system.coordinates()))
     listed = listed || (e.owner == "patch" && e.name == "filament_exclusion" && e.energy > 0);
   EXPECT_TRUE(listed);
+}
+
+TEST(MembraneFilamentSystem, AClampedAnchorHoldsTheDirectionAPinnedOneLetsItTurn) {
+  // A two-cylinder filament tilted 20° from the normal, its tip 2 nm under the patch: the
+  // membrane's push has a sideways part. Pinned, the filament turns about its minus end;
+  // clamped, its first cylinder keeps its direction exactly. The flag survives a restart.
+  for (bool clamped : {false, true}) {
+    Config config = pushConfig(2.0);
+    FilamentInit& init = config.filaments->initial[0];
+    init.length = 216.0;  // 80 monomers: two cylinders
+    init.direction = Vec3(std::sin(0.35), 0.0, std::cos(0.35));
+    init.center = Vec3(253.0, 248.0, 250.0 - 2.0) - 108.0 * init.direction;
+    init.clamped_minus_end = clamped;
+    System system(config);
+    const Vec3 before = system.filaments()->filaments()[0].beads[1] - system.filaments()->filaments()[0].beads[0];
+    ResultRecorder recorder;
+    Simulation sim(system, config.simulation, config.mechanics, recorder);
+    ASSERT_EQ(sim.run(true), RunOutcome::kFinished);
+    const auto& beads = system.filaments()->filaments()[0].beads;
+    const double turned = std::acos(std::min(1.0, (beads[1] - beads[0]).normalized().dot(before.normalized())));
+    if (clamped) {
+      EXPECT_EQ(turned, 0.0);
+      const System restarted(config, &static_cast<const SystemState&>(system.state()));
+      EXPECT_TRUE(restarted.filaments()->filaments()[0].minus_clamped);
+    } else {
+      EXPECT_GT(turned, 0.01) << "radians";
+    }
+  }
 }
 
 TEST(MembraneFilamentSystem, AFilamentThroughTheMembraneAtTheStartIsAnInputError) {
