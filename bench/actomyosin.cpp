@@ -8,10 +8,8 @@
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
-#include <chrono>
-
 #include "actomyosin_scenario.hpp"
-#include "sim/simulation.hpp"
+#include "scenario_run.hpp"
 
 namespace cortex {
 namespace {
@@ -24,28 +22,14 @@ double peakResidentMegabytes() {
 
 void BM_Actomyosin50Filaments(benchmark::State& state) {
   const Config config = bench::actomyosin50Filaments();
-  RunObserver quiet;
-  double simulated = 0.0, wall = 0.0;
-  RunCounters counters;
-  std::int64_t events = 0, evaluations = 0;
-  for (auto _ : state) {
-    auto system = std::make_unique<System>(config);
-    Simulation sim(*system, config.simulation, config.mechanics, quiet);
-    const auto start = std::chrono::steady_clock::now();
-    sim.run(true);
-    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    simulated += config.simulation.end_time;
-    counters = system->counters;
-    events = system->chemistry()->events();
-    evaluations = system->forceField().forceEvaluations();
-  }
-  state.counters["sim_s_per_wall_s"] = simulated / wall;
+  const bench::ScenarioRun r = bench::runScenario(config, state);
+  state.counters["sim_s_per_wall_s"] = r.simulated / r.wall;
   state.counters["peak_MB"] = peakResidentMegabytes();
-  state.counters["chemistry_s"] = counters.chemistry_seconds;
-  state.counters["mechanics_s"] = counters.mechanics_seconds;
-  state.counters["rate_update_s"] = counters.feedback_seconds;
-  state.counters["events"] = static_cast<double>(events);
-  state.counters["force_evaluations"] = static_cast<double>(evaluations);
+  state.counters["chemistry_s"] = r.counters.chemistry_seconds;
+  state.counters["mechanics_s"] = r.counters.mechanics_seconds;
+  state.counters["rate_update_s"] = r.counters.feedback_seconds;
+  state.counters["events"] = static_cast<double>(r.events);
+  state.counters["force_evaluations"] = static_cast<double>(r.force_evaluations);
 }
 BENCHMARK(BM_Actomyosin50Filaments)->Unit(benchmark::kSecond)->Iterations(1)->Repetitions(3)->UseRealTime();
 

@@ -1,12 +1,14 @@
 // Every energy term's analytic gradient against central finite differences of its
 // energy (tests/gradient_check.hpp): membrane terms on randomly perturbed spheres and
 // patches with both curvature estimators and stressed targets, filament terms on random
-// tangles; each after coordinates of another body, which it must not touch. A new term
-// is one line in kCases.
+// tangles, terms between membranes and filaments on straight filaments crossing over and
+// under a rough sphere and patch; each after coordinates of another body, which it must
+// not touch. A new term is one line in kCases.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <memory>
+#include <random>
 
 #include "filament/boundary_energy.hpp"
 #include "filament/branch_energy.hpp"
@@ -16,6 +18,7 @@
 #include "filament/stretching_energy.hpp"
 #include "filament/filament_networks.hpp"
 #include "gradient_check.hpp"
+#include "interact/membrane_bead_exclusion.hpp"
 #include "membrane/area_energy.hpp"
 #include "membrane/bending_energy.hpp"
 #include "membrane/regularization_energy.hpp"
@@ -115,6 +118,59 @@ std::function<std::vector<Fixture>()> onFilaments(FilamentTermFactory make) {
   };
 }
 
+// --- membranes and filaments ---------------------------------------------------------------
+
+using CouplingTermFactory = std::function<std::unique_ptr<EnergyTerm>(Membrane&, const FilamentNetwork&)>;
+
+// A rough sphere and a rough patch, each with straight filaments of 3 cylinders whose
+// beads lie 3-12 nm from the surface on either side (within the default cut-off of
+// several triangles); the coordinates are [other body, membrane, filaments].
+std::function<std::vector<Fixture>()> onMembraneAndFilaments(CouplingTermFactory make) {
+  return [=] {
+    std::vector<Fixture> out;
+    for (bool closed : {true, false}) {
+      struct Owned {
+        std::unique_ptr<Membrane> membrane;
+        std::unique_ptr<FilamentNetwork> network;
+      };
+      auto owned = std::make_shared<Owned>();
+      const SurfaceMesh mesh = closed ? testing::sphereMesh(120.0, 2, 2.0) : testing::patchMesh(300.0, 40.0, 2.0);
+      owned->membrane = std::make_unique<Membrane>("m", mesh, MembraneMechanics{}, std::vector<char>{});
+      FilamentConfig config;
+      config.types.resize(1);
+      owned->network = std::make_unique<FilamentNetwork>(config);
+      std::mt19937 rng(5);
+      std::uniform_real_distribution<double> u(-1.0, 1.0);
+      for (int f = 0; f < 6; ++f) {
+        // Along the surface at a height of 3-12 nm, above or below.
+        const double height = (f % 2 ? 1.0 : -1.0) * (7.5 + 4.5 * u(rng));
+        Vec3 start, direction;
+        if (closed) {
+          const Vec3 radial = Vec3(u(rng), u(rng), u(rng)).normalized();
+          start = (120.0 + height) * radial;
+          direction = radial.cross(Vec3(u(rng), u(rng), u(rng))).normalized();
+        } else {
+          start = Vec3(80 * u(rng), 80 * u(rng), height);
+          direction = Vec3(u(rng), u(rng), 0.05 * u(rng)).normalized();
+        }
+        owned->network->addFilament(makeStraightFilament(0, start, direction, 12, 4, 2.7));
+      }
+      owned->membrane->setOffset(kMembraneOffset);
+      owned->network->setOffset(kMembraneOffset + owned->membrane->numPoints());
+      std::vector<double> x(3 * kMembraneOffset, 1.0);
+      const std::vector<double> own = testing::flatPositions(mesh);
+      x.insert(x.end(), own.begin(), own.end());
+      std::vector<double> beads(3 * owned->network->numPoints());
+      owned->network->gather(beads.data());
+      x.insert(x.end(), beads.begin(), beads.end());
+      auto term = make(*owned->membrane, *owned->network);
+      out.push_back({closed ? "sphere" : "patch", owned, std::move(term), std::move(x), 3 * kMembraneOffset,
+                     static_cast<std::size_t>(-1), 1e-5});
+    }
+    return out;
+  };
+}
+
 const Case kCases[] = {
     {"membrane_global_area", onMembranes([](Membrane& m) {
        return std::make_unique<GlobalAreaEnergy>(m, AreaParameters{AreaModel::kGlobal, Schedule(400.0)});
@@ -154,6 +210,9 @@ const Case kCases[] = {
      })},
     {"filament_branching", onFilaments([](const FilamentLayout& l, const std::vector<FilamentType>&) {
        return std::make_unique<BranchEnergy>(l);
+     })},
+    {"membrane_filament_exclusion", onMembraneAndFilaments([](Membrane& m, const FilamentNetwork& n) {
+       return std::make_unique<MembraneBeadExclusion>(m, n, MembraneBeadExclusionParams{});
      })},
 };
 

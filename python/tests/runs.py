@@ -143,7 +143,50 @@ equation = "B -> 2 A"
 rate = 1.0
 """
 
-CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES}
+# Three anchored filaments growing into a patch under tension (examples/bundle_protrusion.toml,
+# small and short): 9 snapshots of a bulge that grows (until, later, the bundle tips
+# over about its pinned minus ends).
+BUNDLE = """
+[simulation]
+seed = 2
+end_time = 0.2
+chemistry_window = 0.01
+snapshot_interval = 0.025
+
+[compartments]
+size = 250.0
+shape = [2, 2, 2]
+
+[[species]]
+name = "G"
+diffusion = 2.0e7
+concentration = 10.0
+
+[[membrane]]
+name = "patch"
+shape = "plane"
+center = [250.0, 250.0, 300.0]
+size = [500.0, 500.0]
+mesh_size = 25.0
+boundary = "fixed"
+bending_modulus = 100.0
+tension = 0.02
+area_model = "none"
+
+[[filament_type]]
+name = "actin"
+monomer_species = "G"
+
+[[filaments]]
+count = 3
+length = 108.0
+placement = "bundle"
+center = [250.0, 250.0, 240.0]
+direction = [0.0, 0.0, 1.0]
+fixed_minus_end = true
+"""
+
+CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE}
 
 
 def root():

@@ -14,7 +14,7 @@ from tests.helpers import REPOSITORY, assert_png, command, python
 class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species")}
+        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle")}
         cls.tmp = tempfile.TemporaryDirectory()
 
     @classmethod
@@ -57,6 +57,23 @@ class CommandsTest(unittest.TestCase):
         self.assertEqual(lines[0], "run,time_s,rg_nm,rg_rel,filaments,beads,linkers,motors,branch_points")
         self.assertEqual(len(lines), 1 + 2 * len(cortex.open(f)))
         self.assertIn("Rg", self.ok("rg", f, "--type", "0", "--per-length", "--quiet"))
+
+    def test_protrusion(self):
+        b = self.runs["bundle"]
+        stdout = self.ok("protrusion", b, b, "--labels", "a,b", "--csv", self.out("p.csv"), "-o", self.out("p.png"))
+        assert_png(self, self.out("p.png"))
+        with open(self.out("p.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,time_s,height_nm,tip_nm,filament_length_nm")
+        self.assertEqual(len(lines), 1 + 2 * len(cortex.open(b)))
+        # The tips start 6 nm under the flat patch and grow into it: a bulge that grows by
+        # tens of nm, over tips that stay under it.
+        rows = [[float(v) for v in line.split(",")[1:]] for line in lines[1:1 + len(cortex.open(b))]]
+        self.assertLess(rows[0][1], 10.0)
+        self.assertGreater(rows[-1][1], rows[0][1] + 20.0)
+        for t, height, tip, length in rows:
+            self.assertLess(tip, height)
+        self.assertRegex(stdout, r"a: height [0-9.]+ -> [0-9.]+ nm, growth rate over the second half [0-9.]+ nm/s")
 
     def test_mesh_resolution(self):
         stdout = self.ok("mesh-resolution", self.runs["vesicle"], "--mesh-size", "100", "-o", self.out("res.png"))

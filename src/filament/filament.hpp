@@ -22,6 +22,10 @@ struct Filament {
   std::vector<std::int64_t> lattice;       // monomer coordinate of each bead
   bool minus_capped = false;               // held by a branch: the minus end neither grows nor shrinks
   bool minus_anchored = false;             // minus-end bead fixed in space (and its end inert)
+  // Anchored and clamped: the first cylinder's other bead is fixed too, so the anchor
+  // holds the filament's direction (a clamped end) instead of letting it pivot (a pinned
+  // one). With a single cylinder that bead is the plus end: the filament is then rigid.
+  bool minus_clamped = false;
   bool minusEndActive() const { return !minus_capped && !minus_anchored; }
 
   std::int64_t minusEnd() const { return lattice.front(); }

@@ -165,16 +165,29 @@ void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end
     throw std::logic_error("FilamentChemistry::update: one pair of end forces per filament");
   ratchet_.assign(fils.size(), {1.0, 1.0});
   load_.assign(fils.size(), {0.0, 0.0});
+  relaxed_force_ = end_forces;
+  probe_force_.assign(fils.size(), {Vec3::Zero(), Vec3::Zero()});
   for (std::size_t i = 0; i < fils.size(); ++i) {
     const Filament& f = fils[i];
     const double delta = net_.type(f.type).monomer_size;
     for (int e = 0; e < 2; ++e) {
+      if (probe_) probe_force_[i][e] = probe_->forceAt(e ? f.beads.back() : f.beads.front(), e == 1);
       const Vec3 u = e ? f.plusDirection() : f.minusDirection();
       const double load = std::max(0.0, -end_forces[i][e].dot(u));
       load_[i][e] = load;
       ratchet_[i][e] = std::exp(-load * delta / kT_);
     }
   }
+}
+
+void FilamentChemistry::reload(Index i, bool plus_end) {
+  if (!probe_ || static_cast<std::size_t>(i) >= relaxed_force_.size()) return;  // new filaments: unloaded
+  const Filament& f = net_.filaments()[i];
+  const int e = plus_end ? 1 : 0;
+  const Vec3 force = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(plus_end ? f.beads.back() : f.beads.front(), plus_end);
+  const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
+  load_[i][e] = std::max(0.0, -force.dot(u));
+  ratchet_[i][e] = std::exp(-load_[i][e] * net_.type(f.type).monomer_size / kT_);
 }
 
 // Bound proteins fire in the compartment of their first site.

@@ -18,6 +18,7 @@
 #include "chem/chemistry_engine.hpp"
 #include "chem/reaction_hook.hpp"
 #include "filament/binding_candidates.hpp"
+#include "filament/end_load_probe.hpp"
 #include "filament/filament_network.hpp"
 #include "filament/walls.hpp"
 
@@ -52,6 +53,10 @@ class FilamentChemistry final : public ReactionHook {
   // where each bound protein is, the candidate binding pairs and branching sites, then
   // every rate factor that changed.
   void update(const std::vector<std::array<Vec3, 2>>& end_forces);
+  // Bodies that stand still between relaxations and act on ends (membranes): after each
+  // growth or shrinkage of an end, its load becomes the last relaxation's with their
+  // part replaced by what they put on the end where it now is. Null: none.
+  void setEndLoadProbe(const EndLoadProbe* probe) { probe_ = probe; }
 
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
   double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
@@ -75,6 +80,8 @@ class FilamentChemistry final : public ReactionHook {
   Index channelOf(FilamentReaction kind, Index type) const;
   Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
   void computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces);
+  // The ratchet of filament f's end after an event moved it (setEndLoadProbe).
+  void reload(Index f, bool plus_end);
   void locateBound();
   void findCandidates();
   // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the
@@ -113,6 +120,10 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<char> is_dirty_;
   std::vector<BindingCandidates> candidates_;                              // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
+  const EndLoadProbe* probe_ = nullptr;
+  // Per filament, minus and plus end, at the last relaxation: the contact force and the
+  // probe's part of it.
+  std::vector<std::array<Vec3, 2>> relaxed_force_, probe_force_;
   std::vector<std::array<Index, 2>> end_compartment_;                // per filament: minus, plus
   std::array<std::vector<std::vector<Index>>, 2> ends_in_;           // [minus/plus][c]: filaments, sorted
   std::vector<Release> released_;                                    // scratch

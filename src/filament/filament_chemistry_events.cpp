@@ -83,6 +83,7 @@ bool FilamentChemistry::fireEnd(const Channel& ch, Index c, ChemistryEngine& eng
   if (grow) {
     contributeEnds(f, -1.0);
     net_.grow(f, plus);
+    reload(f, plus);
     contributeEnds(f, 1.0);
     return true;
   }
@@ -90,6 +91,7 @@ bool FilamentChemistry::fireEnd(const Channel& ch, Index c, ChemistryEngine& eng
   contributeEnds(f, -1.0);
   released_.clear();
   net_.shrink(f, plus, released_);
+  reload(f, plus);
   if (released_.empty()) {
     contributeEnds(f, 1.0);
   } else {

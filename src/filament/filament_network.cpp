@@ -233,6 +233,7 @@ void FilamentNetwork::frozen(char* mask) const {
   for (const Filament& f : filaments_) {
     std::fill(mask, mask + f.beads.size(), 0);
     mask[0] = f.minus_anchored ? 1 : 0;
+    if (f.minus_clamped && f.beads.size() > 1) mask[1] = 1;
     mask += f.beads.size();
   }
 }

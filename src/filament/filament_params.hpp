@@ -50,6 +50,10 @@ struct FilamentInit {
   // Hold the minus-end bead fixed in space (an anchored filament; its minus end is then
   // inert, neither growing nor shrinking).
   bool fixed_minus_end = false;
+  // Also hold the direction of the first cylinder (a clamped anchor; implies
+  // fixed_minus_end): bundles pushing on a membrane otherwise tip over about their pinned
+  // minus ends.
+  bool clamped_minus_end = false;
 };
 
 // A cross-linker (or a myosin minifilament, see MotorType) is a diffusing species that

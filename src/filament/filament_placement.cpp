@@ -38,7 +38,7 @@ void placeRandom(const FilamentInit& init, std::size_t entry, const FilamentType
       for (int k = 0; k < 3; ++k) minus_end[k] = lo[k] + (hi[k] - lo[k]) * random.uniform();
       const Vec3 direction = uniformDirection(random);
       if (fits(walls, minus_end, direction, length)) {
-        out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end});
+        out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end, init.clamped_minus_end});
         break;
       }
     }
@@ -80,7 +80,7 @@ void placeBundle(const FilamentInit& init, std::size_t entry, const FilamentType
                                    "{:g} nm long) does not fit inside the boundary; move center, or reduce "
                                    "count, spacing or length",
                                    entry, n, init.count, point.x(), point.y(), point.z(), length));
-    out.push_back({init.type_index, minus_end, axis, monomers, init.fixed_minus_end});
+    out.push_back({init.type_index, minus_end, axis, monomers, init.fixed_minus_end, init.clamped_minus_end});
   }
 }
 

@@ -16,6 +16,7 @@ struct FilamentSeed {
   Vec3 direction;    // unit vector from the minus end to the plus end
   int monomers;      // length / monomer_size, rounded, >= 1
   bool fixed_minus_end = false;
+  bool clamped_minus_end = false;
 };
 
 // Every bead of every filament lies inside the boundary (the [boundary] walls, or the

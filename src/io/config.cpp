@@ -167,6 +167,25 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   return m;
 }
 
+// [membrane_filament]: the membrane–bead excluded volume, on by default when the config
+// has membranes and filaments (docs/coupling.md).
+std::optional<MembraneBeadExclusionParams> readMembraneFilament(const ConfigReader& root, const Config& c) {
+  const std::optional<ConfigReader> r = root.table("membrane_filament");
+  const bool both = !c.membranes.empty() && c.filaments.has_value();
+  if (r && !both) r->fail("enabled", "needs at least one [[membrane]] and a [[filament_type]]");
+  if (!both) return std::nullopt;
+  MembraneBeadExclusionParams p;
+  if (!r) return p;
+  const bool enabled = r->boolean("enabled", true);
+  p.stiffness = r->number("stiffness", p.stiffness, Range::positive(), "pN nm^3");
+  p.cutoff = r->number("cutoff", p.cutoff, Range::positive(), "nm");
+  const std::string beads = r->choice("beads", "all", {"all", "ends", "plus_ends"});
+  p.beads = beads == "all" ? ExclusionBeads::kAll : beads == "ends" ? ExclusionBeads::kEnds : ExclusionBeads::kPlusEnds;
+  r->finish();
+  if (!enabled) return std::nullopt;
+  return p;
+}
+
 }  // namespace
 
 Config parseConfig(const std::string& text, const std::string& source,
@@ -197,6 +216,7 @@ Config parseConfig(const std::string& text, const std::string& source,
   }
   c.chemistry = readChemistry(r, c.membranes);
   c.filaments = readFilaments(r, c.chemistry);
+  c.membrane_filament = readMembraneFilament(r, c);
   if (c.membranes.empty() && !c.chemistry && !c.filaments)
     throw InputError(fmt::format("{}: no [[membrane]], [[species]] or [[filament_type]] given: nothing to simulate",
                                  source));

@@ -7,7 +7,7 @@
 namespace cortex {
 namespace {
 
-constexpr std::int8_t kCapped = 1, kAnchored = 2;
+constexpr std::int8_t kCapped = 1, kAnchored = 2, kClamped = 4;
 
 void writeBindings(h5::File& f, const std::string& path, const std::vector<Binding>& bound) {
   std::vector<std::int64_t> ids;
@@ -60,7 +60,8 @@ void writeFilamentState(h5::File& f, const FilamentState& network) {
     lattice.insert(lattice.end(), fil.lattice.begin(), fil.lattice.end());
     offsets.push_back(static_cast<std::int64_t>(lattice.size()));
     types.push_back(fil.type);
-    flags.push_back(static_cast<std::int8_t>((fil.minus_capped ? kCapped : 0) | (fil.minus_anchored ? kAnchored : 0)));
+    flags.push_back(static_cast<std::int8_t>((fil.minus_capped ? kCapped : 0) | (fil.minus_anchored ? kAnchored : 0) |
+                                                (fil.minus_clamped ? kClamped : 0)));
   }
   f.createGroups("/filaments");
   f.write("/filaments/beads", beads, {lattice.size(), 3});
@@ -97,6 +98,7 @@ FilamentState readFilamentState(const h5::File& f, const std::string& file_name)
     fil.type = types[i];
     fil.minus_capped = flags[i] & kCapped;
     fil.minus_anchored = flags[i] & kAnchored;
+    fil.minus_clamped = flags[i] & kClamped;
     if (offsets[i + 1] - offsets[i] < 2) throw malformed("offsets");
     for (std::int64_t b = offsets[i]; b < offsets[i + 1]; ++b) {
       fil.beads.emplace_back(beads[3 * b], beads[3 * b + 1], beads[3 * b + 2]);

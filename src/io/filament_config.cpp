@@ -118,7 +118,8 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
   if (f.length > space.extent)
     r.fail("length", fmt::format("({:g} nm) exceeds the {} ({:g} nm): no filament fits", f.length, space.what,
                                  space.extent));
-  f.fixed_minus_end = r.boolean("fixed_minus_end", f.fixed_minus_end);
+  f.clamped_minus_end = r.boolean("clamped_minus_end", f.clamped_minus_end);
+  f.fixed_minus_end = r.boolean("fixed_minus_end", f.fixed_minus_end) || f.clamped_minus_end;
   if (r.choice("placement", "random", {"random", "bundle"}) == "bundle") {
     f.placement = FilamentInit::Placement::kBundle;
     if (r.has("region")) r.fail("region", "is for placement = \"random\"");

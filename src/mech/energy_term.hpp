@@ -6,13 +6,19 @@
 
 namespace cortex {
 
+class Body;
+
 // Coordinates of every degree of freedom, and where to add the gradient (may be null
 // when only the energy is wanted). `version` changes whenever x changes, so terms that
-// share derived geometry can cache it.
+// share derived geometry can cache it. When `alone` is set, x and the gradient hold that
+// body's points only, laid out from offset zero (a membrane's shape relaxation), and
+// every other body stays at its stored positions: terms between bodies read those from
+// the body and give them no gradient.
 struct Evaluation {
   const double* x = nullptr;
   double* gradient = nullptr;
   std::uint64_t version = 0;
+  const Body* alone = nullptr;
 };
 
 class EnergyTerm {
@@ -22,6 +28,10 @@ class EnergyTerm {
   // (a membrane's name); summary.json groups energies by both.
   virtual const std::string& name() const = 0;
   virtual const std::string& owner() const = 0;
+  // Whether it acts on the body of this name: its owner, and for a term between bodies
+  // (membrane–filament excluded volume) the others too. A body relaxed on its own is
+  // relaxed under every term that acts on it.
+  virtual bool actsOn(const std::string& body) const { return body == owner(); }
   // Returns the energy (pN·nm) and, if e.gradient is set, adds dE/dx (pN) to it.
   virtual double evaluate(const Evaluation& e) = 0;
   // Evaluates the term's scheduled parameters at time t (s).

@@ -26,10 +26,10 @@ double ForceField::evaluateTerms(const std::vector<EnergyTerm*>& terms, const Ei
   return total;
 }
 
-std::vector<EnergyTerm*> ForceField::termsOf(const std::string& owner) const {
+std::vector<EnergyTerm*> ForceField::termsOf(const std::string& body) const {
   std::vector<EnergyTerm*> out;
   for (EnergyTerm* t : all_)
-    if (t->owner() == owner) out.push_back(t);
+    if (t->actsOn(body)) out.push_back(t);
   return out;
 }
 

@@ -36,20 +36,27 @@ class ForceField final : public Objective {
   // The same for some of the terms (in their order here), counted as evaluations of the
   // field: relaxing some bodies while the terms of the others are left out.
   double evaluateTerms(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient);
-  // The terms acting on one body (EnergyTerm::owner), in order.
-  std::vector<EnergyTerm*> termsOf(const std::string& owner) const;
-  // Those terms as an Objective over all coordinates.
+  // The terms acting on one body (EnergyTerm::actsOn), in order.
+  std::vector<EnergyTerm*> termsOf(const std::string& body) const;
+  // Those terms as an Objective over all coordinates in which only the coordinates in
+  // [first, first + count) move: the gradient elsewhere reads zero, so a term between
+  // this body and another does not move the other.
   class Part final : public Objective {
    public:
-    Part(ForceField& field, std::vector<EnergyTerm*> terms) : field_(field), terms_(std::move(terms)) {}
+    Part(ForceField& field, std::vector<EnergyTerm*> terms, Eigen::Index first, Eigen::Index count)
+        : field_(field), terms_(std::move(terms)), first_(first), count_(count) {}
     double value(const Eigen::VectorXd& x) override { return field_.evaluateTerms(terms_, x, nullptr); }
     double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
-      return field_.evaluateTerms(terms_, x, &g);
+      const double value = field_.evaluateTerms(terms_, x, &g);
+      g.head(first_).setZero();
+      g.tail(g.size() - first_ - count_).setZero();
+      return value;
     }
 
    private:
     ForceField& field_;
     std::vector<EnergyTerm*> terms_;
+    Eigen::Index first_, count_;
   };
   // A version no evaluation has used yet, for callers that evaluate terms themselves (the
   // membrane relaxation): terms cache derived geometry by version.

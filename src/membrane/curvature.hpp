@@ -30,6 +30,10 @@ inline CurvatureAndDerivative meanCurvature(const Vec3& ga, const Vec3& gv, Curv
   }
   const double na = ga.norm(), nv = gv.norm();
   const double h = na / (2.0 * nv);
+  // |gA| has no derivative where gA = 0 (a flat vertex); H² has, and it is zero there,
+  // which is the derivative the bending energy needs at H0 = 0 (0 is also a subgradient
+  // of H there). Without this case a flat patch's forces were 0/0.
+  if (na == 0.0) return {0.0, Vec3::Zero(), Vec3::Zero()};
   return {h, ga / (2.0 * na * nv), -h * gv / (nv * nv)};
 }
 

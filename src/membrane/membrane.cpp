@@ -75,6 +75,7 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   mesh_ = SurfaceMesh::fromSoup({mesh_.positions(), mesh_.triangles()}, name_);
   topology_ = MeshTopology::of(mesh_);
   cache_valid_ = false;
+  ++connectivity_version_;
   remesh_totals_.splits += stats.splits;
   remesh_totals_.collapses += stats.collapses;
   remesh_totals_.flips += stats.flips;

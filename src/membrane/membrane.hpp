@@ -127,6 +127,9 @@ class Membrane final : public Body {
   const std::optional<RemeshSettings>& remeshing() const { return remeshing_; }
   void setRemeshing(std::optional<RemeshSettings> settings) { remeshing_ = std::move(settings); }
   const RemeshStats& remeshTotals() const { return remesh_totals_; }
+  // Changes whenever the connectivity does (every remesh): terms that keep lists of
+  // triangles rebuild them.
+  std::uint64_t connectivityVersion() const { return connectivity_version_; }
   void setRemeshTotals(const RemeshStats& totals) { remesh_totals_ = totals; }
 
   // Geometry at the coordinates of `e`, recomputed only when e.version changes.
@@ -147,6 +150,7 @@ class Membrane final : public Body {
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;
   bool cache_valid_ = false;
+  std::uint64_t connectivity_version_ = 0;
 };
 
 // Volume of the sphere with area A: the denominator of the reduced volume.

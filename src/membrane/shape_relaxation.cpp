@@ -1,10 +1,12 @@
 #include "membrane/shape_relaxation.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.hpp"
 #include "mech/constrained_lbfgs.hpp"
@@ -121,7 +123,7 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
     const Timer timer{force_seconds};
     positionsAt(u);
     grad3_.setZero();
-    const Evaluation e{x_.data(), grad3_.data(), field_.newVersion()};
+    const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_};
     double total = 0.0;
     for (EnergyTerm* t : terms_) total += t->evaluate(e);
     return total;
@@ -132,6 +134,9 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
     const double total = fullValueAndGradient(u);
     g.resize(size());
     for (Index v = 0; v < size(); ++v) g[v] = fixed_[v] ? 0.0 : normals_[v].dot(grad3_.segment<3>(3 * v));
+    // Forces that are not numbers make the point unacceptable, like an infinite energy:
+    // line searches back off, and a start there ends the relaxation (reported below).
+    if (!g.allFinite()) return std::numeric_limits<double>::infinity();
     return total;
   }
   void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& c, Eigen::MatrixXd& jac) override {
@@ -436,6 +441,13 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     for (Index v = 0; v < n; ++v) {
       if (m.fixedVertices()[v]) continue;
       const Vec3 f = lagrangian.segment<3>(3 * v);
+      if (!f.allFinite()) {
+        // Not a number is not zero: this must never read as converged.
+        rep.max_force = rep.max_normal_force = std::numeric_limits<double>::infinity();
+        rep.converged = false;
+        rep.stop_reason = fmt::format("the forces on vertex {} are not finite", v);
+        break;
+      }
       rep.max_force = std::max(rep.max_force, f.cwiseAbs().maxCoeff());
       rep.max_normal_force = std::max(rep.max_normal_force, std::abs(normals[v].dot(f)));
     }

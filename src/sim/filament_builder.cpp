@@ -75,6 +75,7 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
     const FilamentType& t = config.types[s.type];
     Filament f = makeStraightFilament(s.type, s.minus_end, s.direction, s.monomers, t.cylinder_monomers, t.monomer_size);
     f.minus_anchored = s.fixed_minus_end;
+    f.minus_clamped = s.clamped_minus_end;
     network->addFilament(std::move(f));
   }
   return network;

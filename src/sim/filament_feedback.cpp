@@ -4,8 +4,9 @@
 
 namespace cortex {
 
-FilamentFeedback::FilamentFeedback(FilamentNetwork& network, FilamentTerms terms, FilamentChemistry& chemistry)
-    : network_(network), terms_(terms), chemistry_(chemistry) {}
+FilamentFeedback::FilamentFeedback(FilamentNetwork& network, FilamentTerms terms, FilamentChemistry& chemistry,
+                                   MembraneEndLoads* end_loads)
+    : network_(network), terms_(terms), chemistry_(chemistry), end_loads_(end_loads) {}
 
 void FilamentFeedback::update(System& system) { apply(system.coordinates(), system.forceField()); }
 
@@ -25,6 +26,7 @@ void FilamentFeedback::apply(const Eigen::VectorXd& x, ForceField& force_field) 
     std::vector<Binding>& bound = network_.bound(kind);
     for (std::size_t i = 0; i < bound.size(); ++i) bound[i].tension = tensions[i];
   }
+  if (end_loads_) end_loads_->update();
   chemistry_.update(end_forces);
 }
 

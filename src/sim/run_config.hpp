@@ -12,6 +12,7 @@
 #include "chem/chemistry_engine.hpp"
 #include "core/types.hpp"
 #include "filament/filament_params.hpp"
+#include "interact/membrane_bead_exclusion.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
 #include "mesh/triangle_soup.hpp"
@@ -80,6 +81,9 @@ struct Config {
   std::vector<MembraneConfig> membranes;
   std::optional<ChemistryConfig> chemistry;  // present when [[species]] are given
   std::optional<FilamentConfig> filaments;   // present when [[filament_type]] are given
+  // Excluded volume between every membrane and the filaments' beads: on whenever both
+  // are present, unless [membrane_filament] enabled = false.
+  std::optional<MembraneBeadExclusionParams> membrane_filament;
 };
 
 }  // namespace cortex

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "interact/membrane_crossing.hpp"
 #include "membrane/shape_relaxation.hpp"
 #include "mesh/mesh_quality.hpp"
 
@@ -109,7 +110,39 @@ MinimizerProgressCallback Simulation::progressOf(std::string what) {
   return [this, what = std::move(what)](const MinimizerProgress& p) { observer_.onRelaxing(system_, what, p); };
 }
 
+namespace {
+// Membranes and filaments that push on each other relax in turn, each under the other at
+// rest, until a membrane relaxation finds nothing left to do; past this many rounds the
+// relaxation is reported unconverged.
+constexpr int kMaxCouplingRounds = 50;
+
+}  // namespace
+
 MinimizationResult Simulation::relaxByBody() {
+  const bool coupled = !system_.couplingTerms().empty();
+  MinimizationResult r{true, 0, 0.0, 0.0, ""};
+  for (int round = 0;; ++round) {
+    const MinimizationResult membranes = relaxMembranes();
+    if (round > 0 && membranes.iterations == 0) break;  // at rest under the filaments' last move
+    const MinimizationResult filaments = relaxFilaments();
+    r.iterations += membranes.iterations + filaments.iterations;
+    r.energy = membranes.energy + filaments.energy;
+    r.max_force = std::max(membranes.max_force, filaments.max_force);
+    r.converged = membranes.converged && filaments.converged;
+    r.stop_reason = !membranes.converged ? membranes.stop_reason : filaments.stop_reason;
+    if (!coupled || filaments.iterations == 0) break;
+    if (round + 1 == kMaxCouplingRounds) {
+      r.converged = false;
+      r.stop_reason = fmt::format("membranes and filaments did not come to rest together in {} rounds of "
+                                  "relaxing each under the other",
+                                  kMaxCouplingRounds);
+      break;
+    }
+  }
+  return r;
+}
+
+MinimizationResult Simulation::relaxMembranes() {
   MinimizationResult r{true, 0, 0.0, 0.0, ""};
   RunCounters& c = system_.counters;
   ShapeRelaxationSettings settings{mech_.force_tolerance_given ? mech_.force_tolerance : 0.0, mech_.max_iterations, {}};
@@ -148,8 +181,14 @@ MinimizationResult Simulation::relaxByBody() {
                                  rep.force_tolerance, rep.stop_reason));
   }
   if (remeshed) system_.layOut();
+  return r;
+}
+
+MinimizationResult Simulation::relaxFilaments() {
+  MinimizationResult r{true, 0, 0.0, 0.0, ""};
   if (const FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
-    ForceField::Part filaments(system_.forceField(), system_.forceField().termsOf(net->name()));
+    ForceField::Part filaments(system_.forceField(), system_.forceField().termsOf(net->name()), 3 * net->offset(),
+                               3 * net->numPoints());
     Eigen::VectorXd x = system_.coordinates();
     MinimizerSettings filament_settings = mech_;
     filament_settings.progress = progressOf("filaments");
@@ -184,9 +223,18 @@ void Simulation::checkRelaxation(const MinimizationResult& r) const {
                                r.stop_reason));
 }
 
+void Simulation::checkCrossings(const char* when) const {
+  for (const MembraneBeadExclusion* term : system_.couplingTerms())
+    if (const auto crossing = findMembraneCrossing(term->membrane(), term->network()))
+      throw RunError(fmt::format("t = {:.6g} s, {}: {}; the excluded volume did not keep it out (a smaller "
+                                 "chemistry_window or a larger [membrane_filament] stiffness may)",
+                                 system_.time(), when, crossing->describe(term->membrane())));
+}
+
 MinimizationResult Simulation::relax() {
   // Chemistry may have grown, bound or branched filaments since the last relaxation.
   if (system_.filaments()) system_.layOut();
+  checkCrossings("after the chemistry window");
   MinimizationResult r{true, 0, 0.0, 0.0, "nothing to relax"};
   RunCounters& c = system_.counters;
   const bool by_body = mech_.kind == MinimizerKind::kAuto;
@@ -202,6 +250,7 @@ MinimizationResult Simulation::relax() {
   }
   if (!by_body) remeshMembranes();  // the shape relaxation remeshes within
   checkMeshes();
+  checkCrossings("after the relaxation");
   checkRelaxation(r);
   // Membranes and filaments moved: confinement, loads, tensions and binding partners
   // change the rates.

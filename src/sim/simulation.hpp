@@ -39,10 +39,15 @@ class Simulation {
  private:
   MinimizationResult relax();
   // kAuto: membranes one by one (normal displacements, exact constraints, remeshing
-  // within), then filaments; the rest: all coordinates at once.
+  // within), then filaments, in rounds while they push on each other; the rest: all
+  // coordinates at once.
   MinimizationResult relaxByBody();
+  MinimizationResult relaxMembranes();
+  MinimizationResult relaxFilaments();
   MinimizationResult relaxAll();
   void checkMeshes() const;
+  // A filament through a membrane is an error (exit 1), named with `when` it was found.
+  void checkCrossings(const char* when) const;
   // A relaxation that ended far from the tolerance is an error, not a warning.
   void checkRelaxation(const MinimizationResult& r) const;
   void remeshMembranes();

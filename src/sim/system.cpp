@@ -5,6 +5,8 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "filament/filament_terms.hpp"
+#include "interact/membrane_bead_exclusion.hpp"
+#include "interact/membrane_crossing.hpp"
 #include "membrane/membrane_terms.hpp"
 #include "sim/chemistry_builder.hpp"
 #include "sim/confinement.hpp"
@@ -52,7 +54,16 @@ System::System(const Config& config, const SystemState* restored) {
   for (auto& m : membranes_) addMembraneTerms(*m, force_field_);
   FilamentTerms filament_terms;
   if (filaments_) filament_terms = addFilamentTerms(*filaments_, force_field_);
+  if (config.membrane_filament && filaments_)
+    for (auto& m : membranes_)
+      coupling_terms_.push_back(
+          &force_field_.add(std::make_unique<MembraneBeadExclusion>(*m, *filaments_, *config.membrane_filament)));
   if (config.chemistry) buildChemistry(config, restored, filament_terms);
+
+  for (const MembraneBeadExclusion* term : coupling_terms_)
+    if (const auto crossing = findMembraneCrossing(term->membrane(), term->network()))
+      throw InputError(fmt::format("{}: at the start, {}: place the filaments on one side of it", config.source,
+                                   crossing->describe(term->membrane())));
 
   if (restored) {
     time_ = restored->time;
@@ -101,7 +112,13 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_reactions));
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);
-    feedback_.push_back(std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_));
+    if (!coupling_terms_.empty()) {
+      end_loads_ = std::make_unique<MembraneEndLoads>(
+          std::vector<const MembraneBeadExclusion*>(coupling_terms_.begin(), coupling_terms_.end()));
+      filament_chemistry_->setEndLoadProbe(end_loads_.get());
+    }
+    feedback_.push_back(
+        std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_loads_.get()));
   }
 }
 

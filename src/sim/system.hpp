@@ -13,6 +13,8 @@
 #include "filament/filament_chemistry.hpp"
 #include "filament/filament_network.hpp"
 #include "filament/filament_terms.hpp"
+#include "interact/membrane_bead_exclusion.hpp"
+#include "interact/membrane_end_loads.hpp"
 #include "mech/force_field.hpp"
 #include "membrane/membrane.hpp"
 #include "sim/feedback.hpp"
@@ -46,6 +48,9 @@ class System {
   // All coordinates as one vector (the minimizer's variables) and back into the bodies.
   Eigen::VectorXd coordinates() const;
   void setCoordinates(const Eigen::VectorXd& x);
+  // Terms between membranes and filaments (empty when they do not interact): their
+  // bodies are relaxed in turn until both are at rest under them.
+  const std::vector<MembraneBeadExclusion*>& couplingTerms() const { return coupling_terms_; }
   Index numVertices() const;  // membrane vertices
   Index numDegreesOfFreedom() const;
   bool hasMechanics() const { return numDegreesOfFreedom() > 0; }
@@ -74,6 +79,8 @@ class System {
   std::unique_ptr<FilamentNetwork> filaments_;
   std::vector<Body*> bodies_;
   ForceField force_field_;
+  std::vector<MembraneBeadExclusion*> coupling_terms_;
+  std::unique_ptr<MembraneEndLoads> end_loads_;  // with coupling terms and filament chemistry
   CompartmentGrid grid_;
   ChemistryModel chemistry_model_;
   std::unique_ptr<FilamentChemistry> filament_chemistry_;

@@ -93,6 +93,44 @@ TEST(FilamentRatchetLoad, IncludesExcludedVolumeFromOtherFilaments) {
   EXPECT_EQ(rig.chemistry->endLoad(0, false), 0.0);
 }
 
+// A wall standing still between relaxations (as a membrane does) in front of a growing
+// plus end: force F0 e^(−(x_wall − x)/λ) against the growth direction.
+struct ExponentialWall final : public EndLoadProbe {
+  double x_wall, f0 = 10.0, lambda = 2.7;
+  Vec3 forceAt(const Vec3& p, bool plus_end) const override {
+    return plus_end ? Vec3(-f0 * std::exp(-(x_wall - p.x()) / lambda), 0.0, 0.0) : Vec3::Zero();
+  }
+};
+
+// Growth steps within one chemistry window: each moves the end closer to the wall, and
+// the ratchet sees it at once (the last relaxation's load with the wall's part replaced
+// by the wall's push where the end now is), not at the next relaxation.
+TEST(FilamentRatchetLoad, AGrowingEndFeelsAStillBodyBeforeTheNextRelaxation) {
+  FilamentConfig config;
+  config.types = {filtest::actin()};
+  config.types[0].plus_off = config.types[0].minus_on = config.types[0].minus_off = 0.0;
+  Rig rig(2000.0, {1, 1, 1}, {{"G", 0.0}}, {100000}, config, [&](FilamentNetwork& net) {
+    net.addFilament(makeStraightFilament(0, Vec3(500.0, 1000.0, 1000.0), Vec3::UnitX(), 40, 40, 2.7));
+  });
+  ExponentialWall wall;
+  const double tip0 = rig.network->filaments()[0].beads.back().x();
+  wall.x_wall = tip0 + 12.0;
+  rig.chemistry->setEndLoadProbe(&wall);
+  rig.relaxed();  // the last relaxation: no contact term here, so its load is 0
+  EXPECT_EQ(rig.chemistry->endLoad(0, true), 0.0);
+  for (int step = 0; step < 40 && rig.network->filaments()[0].beads.back().x() < tip0 + 5.0; ++step)
+    rig.engine->advance(rig.engine->time() + 0.001);
+  const double tip = rig.network->filaments()[0].beads.back().x();
+  ASSERT_GE(tip, tip0 + 5.0);  // grown at least two monomers within the window
+  const double load = wall.f0 * (std::exp(-(wall.x_wall - tip) / wall.lambda) - std::exp(-12.0 / wall.lambda));
+  EXPECT_NEAR(rig.chemistry->endLoad(0, true), load, 1e-12 * load);
+  EXPECT_NEAR(rig.chemistry->ratchetFactor(0, true), std::exp(-load * 2.7 / filtest::kT), 1e-12);
+  EXPECT_LT(rig.chemistry->ratchetFactor(0, true), 0.6);
+  // The next relaxation starts over from the forces it finds.
+  rig.relaxed();
+  EXPECT_EQ(rig.chemistry->endLoad(0, true), 0.0);
+}
+
 // One motor on two fixed antiparallel filaments, no load: each end steps towards its
 // filament's plus end at walk_rate until it reaches the end.
 TEST(FilamentMotor, WalksTowardsPlusEndsAtItsRate) {

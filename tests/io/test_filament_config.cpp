@@ -172,6 +172,14 @@ TEST(FilamentConfig, OverridesReachArraysOfTables) {
   EXPECT_TRUE((*c.filaments->initial[0].region)[1].isApprox(Vec3(200, 300, 400)));
 }
 
+TEST(FilamentConfig, AClampedMinusEndIsAFixedOne) {
+  const Config c = parse(kValid, {"filaments.1.clamped_minus_end=true"});
+  EXPECT_TRUE(c.filaments->initial[1].clamped_minus_end);
+  EXPECT_TRUE(c.filaments->initial[1].fixed_minus_end);
+  EXPECT_FALSE(c.filaments->initial[0].clamped_minus_end);
+  EXPECT_FALSE(c.filaments->initial[0].fixed_minus_end);
+}
+
 struct BadOverride {
   std::string set;  // a --set assignment on kValid
   std::string key;  // expected in the message

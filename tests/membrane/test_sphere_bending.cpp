@@ -82,3 +82,27 @@ TEST(SphereBending, WithinOnePercentForMeshSizeBelowRadiusOverTwenty) {
 
 }  // namespace
 }  // namespace cortex
+
+namespace cortex {
+namespace {
+
+TEST(FlatBending, AnExactlyFlatPatchHasZeroFiniteForcesWithEitherEstimator) {
+  // |∇A| = 0 at a flat vertex: the unsigned estimator's H = |∇A|/(2|∇V|) has no
+  // derivative there, H² has (zero). Its forces were 0/0 = NaN, which a relaxation took
+  // for "converged" (a flat patch pushed by a filament never moved).
+  const SurfaceMesh mesh = testing::patchMesh(200.0, 20.0);
+  Membrane membrane("patch", mesh, {}, {});
+  for (auto estimator : {CurvatureEstimator::kSigned, CurvatureEstimator::kUnsigned}) {
+    BendingEnergy term(membrane, {Schedule(100.0), Schedule(0.0), estimator});
+    const std::vector<double> x = testing::flatPositions(mesh);
+    std::vector<double> g(x.size(), 0.0);
+    EXPECT_EQ(term.evaluate({x.data(), g.data(), 1}), 0.0);
+    for (double v : g) {
+      ASSERT_TRUE(std::isfinite(v));
+      EXPECT_EQ(v, 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cortex

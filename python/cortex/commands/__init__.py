@@ -1,7 +1,7 @@
 """The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
 run(args) -> exit code."""
 
-from . import filaments, info, membrane, mesh_resolution, movie, plot, rg
+from . import filaments, info, membrane, mesh_resolution, movie, plot, protrusion, rg
 
 # Command name -> module, in the order `--help` lists them.
 COMMANDS = {
@@ -11,5 +11,6 @@ COMMANDS = {
     "filaments": filaments,
     "movie": movie,
     "rg": rg,
+    "protrusion": protrusion,
     "mesh-resolution": mesh_resolution,
 }

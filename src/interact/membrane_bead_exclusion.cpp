@@ -1,0 +1,212 @@
+#include "interact/membrane_bead_exclusion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "interact/triangle_cells.hpp"
+#include "interact/triangle_inverse_fourth.hpp"
+#include "interact/triangle_queries.hpp"
+
+namespace cortex {
+namespace {
+
+// The skin of the Verlet list, as a fraction of the cut-off: larger lists fewer rebuilds.
+constexpr double kSkinFraction = 0.5;
+// Pairs fade out smoothly from this fraction of the cut-off to the cut-off.
+constexpr double kFadeStart = 0.5;
+
+}  // namespace
+
+MembraneBeadExclusion::MembraneBeadExclusion(const Membrane& membrane, const FilamentNetwork& network,
+                                             MembraneBeadExclusionParams params)
+    : membrane_(membrane), network_(network), params_(params), skin_(kSkinFraction * params.cutoff) {}
+
+const std::string& MembraneBeadExclusion::name() const {
+  static const std::string kName = "filament_exclusion";
+  return kName;
+}
+
+void MembraneBeadExclusion::gatherPositions(const Evaluation& e) {
+  // Which beads: chosen again whenever the network's layout changed (growth added a bead,
+  // a branch a filament).
+  if (!built_ || network_.layout().version != built_layout_) {
+    beads_.clear();
+    const auto& filaments = network_.filaments();
+    for (std::size_t f = 0; f < filaments.size(); ++f) {
+      const Index first = network_.firstBead(static_cast<Index>(f));
+      const Index last = first + static_cast<Index>(filaments[f].beads.size()) - 1;
+      switch (params_.beads) {
+        case ExclusionBeads::kAll:
+          for (Index b = first; b <= last; ++b) beads_.push_back(b);
+          break;
+        case ExclusionBeads::kEnds:
+          beads_.push_back(first);
+          if (last != first) beads_.push_back(last);
+          break;
+        case ExclusionBeads::kPlusEnds: beads_.push_back(last); break;
+      }
+    }
+    built_ = false;
+  }
+  const Index nv = membrane_.mesh().numVertices();
+  vertex_x_.resize(static_cast<std::size_t>(nv));
+  if (!e.alone || e.alone == &membrane_) {
+    const double* x = e.x + 3 * membrane_.offset();
+    for (Index v = 0; v < nv; ++v) vertex_x_[v] = Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  } else {
+    vertex_x_ = membrane_.mesh().positions();
+  }
+  bead_x_.resize(beads_.size());
+  const double* x = e.x + 3 * network_.offset();
+  std::vector<double> stored;
+  if (e.alone && e.alone != &network_) {
+    stored.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+    network_.gather(stored.data());
+    x = stored.data();
+  }
+  for (std::size_t i = 0; i < beads_.size(); ++i) {
+    const double* b = x + 3 * beads_[i];
+    bead_x_[i] = Vec3(b[0], b[1], b[2]);
+  }
+}
+
+bool MembraneBeadExclusion::listIsStale() const {
+  if (!built_ || membrane_.connectivityVersion() != built_connectivity_ ||
+      built_vertex_x_.size() != vertex_x_.size() || built_bead_x_.size() != bead_x_.size())
+    return true;
+  double vertex_move = 0.0, bead_move = 0.0;
+  for (std::size_t v = 0; v < vertex_x_.size(); ++v)
+    vertex_move = std::max(vertex_move, (vertex_x_[v] - built_vertex_x_[v]).squaredNorm());
+  for (std::size_t b = 0; b < bead_x_.size(); ++b)
+    bead_move = std::max(bead_move, (bead_x_[b] - built_bead_x_[b]).squaredNorm());
+  return !(std::sqrt(vertex_move) + std::sqrt(bead_move) < skin_);
+}
+
+void MembraneBeadExclusion::rebuild() {
+  ++rebuilds_;
+  built_ = true;
+  built_connectivity_ = membrane_.connectivityVersion();
+  built_layout_ = network_.layout().version;
+  built_vertex_x_ = vertex_x_;
+  built_bead_x_ = bead_x_;
+  pairs_.clear();
+  const auto& triangles = membrane_.topology().triangles;
+  const double reach = params_.cutoff + skin_, reach2 = reach * reach;
+  const TriangleCells cells(vertex_x_, triangles, reach);
+  for (std::size_t b = 0; b < bead_x_.size(); ++b) {
+    const Vec3& p = bead_x_[b];
+    cells.near(p, [&](Index f) {
+      const Tri& t = triangles[f];
+      if ((closestPointOnTriangle(p, vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]]).point - p).squaredNorm() <
+          reach2)
+        pairs_.push_back({f, static_cast<Index>(b)});
+    });
+  }
+  std::sort(pairs_.begin(), pairs_.end(),
+            [](const Pair& x, const Pair& y) { return x.face != y.face ? x.face < y.face : x.bead < y.bead; });
+}
+
+MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b,
+                                                                   const Vec3& c, bool gradient) const {
+  PairEnergy out;
+  const double k = params_.stiffness, cutoff = params_.cutoff, fade_start = kFadeStart * cutoff;
+  const TrianglePoint nearest = closestPointOnTriangle(p, a, b, c);
+  const double distance = (p - nearest.point).norm();
+  if (!(distance < cutoff)) return out;
+  out.active = true;
+  // The fade S(x) = 1 − 10x³ + 15x⁴ − 6x⁵ over x = (distance − fade_start)/(cutoff − fade_start):
+  // C² in the distance, which is C¹ in the positions, so the energy has continuous forces.
+  double fade = 1.0, fade_slope = 0.0;
+  if (distance > fade_start) {
+    const double width = cutoff - fade_start, x = (distance - fade_start) / width;
+    fade = 1.0 - x * x * x * (10.0 - x * (15.0 - 6.0 * x));
+    fade_slope = -30.0 * x * x * (1.0 - x) * (1.0 - x) / width;
+  }
+  if (!gradient) {
+    out.energy = k * fade * triangleInverseFourth(p, a, b, c);
+    return out;
+  }
+  const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c);
+  out.energy = k * fade * r.value;
+  if (!std::isfinite(r.value)) return out;
+  // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
+  const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
+  out.d_point = k * fade * r.d_point + away;
+  for (int v = 0; v < 3; ++v) out.d_vertices[v] = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
+  return out;
+}
+
+Vec3 MembraneBeadExclusion::forceAt(const Vec3& p, const TriangleCells& held) const {
+  const auto& x = membrane_.mesh().positions();
+  const auto& triangles = membrane_.topology().triangles;
+  std::vector<Index> faces;
+  held.near(p, [&](Index f) { faces.push_back(f); });
+  std::sort(faces.begin(), faces.end());  // summed in one order, whatever the cells'
+  Vec3 force = Vec3::Zero();
+  for (Index f : faces) {
+    const Tri& t = triangles[f];
+    const PairEnergy pe = pairEnergy(p, x[t[0]], x[t[1]], x[t[2]], true);
+    if (pe.active) force -= pe.d_point;
+  }
+  return force;
+}
+
+TriangleCells MembraneBeadExclusion::heldCells() const {
+  return TriangleCells(membrane_.mesh().positions(), membrane_.topology().triangles, params_.cutoff);
+}
+
+bool MembraneBeadExclusion::crossesSinceHeld(const Evaluation& e) {
+  const bool vertices_move = !e.alone || e.alone == &membrane_, beads_move = !e.alone || e.alone == &network_;
+  if (!vertices_move && !beads_move) return false;
+  const std::vector<Vec3>& held_vertices = membrane_.mesh().positions();
+  held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+  network_.gather(held_beads_.data());
+  if (held_vertices.size() != vertex_x_.size()) return false;  // remeshed since: nothing to compare with
+  const auto& triangles = membrane_.topology().triangles;
+  for (const Pair& pair : pairs_) {
+    const Tri& t = triangles[pair.face];
+    const Vec3& p = bead_x_[pair.bead];
+    const Vec3 a = vertex_x_[t[0]], b = vertex_x_[t[1]], c = vertex_x_[t[2]];
+    // Only where the bead lies over the triangle (its foot inside): elsewhere a change of
+    // side is the bead passing beside the triangle, seen by the neighbour it is over.
+    const Vec3 n = (b - a).cross(c - a);
+    const Vec3 q = p - (p - a).dot(n) / n.squaredNorm() * n;
+    if ((b - a).cross(q - a).dot(n) < 0 || (c - b).cross(q - b).dot(n) < 0 || (a - c).cross(q - c).dot(n) < 0) continue;
+    const Vec3 p0 = Eigen::Map<const Vec3>(held_beads_.data() + 3 * beads_[pair.bead]);
+    const Vec3 &a0 = held_vertices[t[0]], &b0 = held_vertices[t[1]], &c0 = held_vertices[t[2]];
+    const double side = (p - a).dot(n), held_side = (p0 - a0).dot((b0 - a0).cross(c0 - a0));
+    if ((side > 0 && held_side < 0) || (side < 0 && held_side > 0)) return true;
+  }
+  return false;
+}
+
+double MembraneBeadExclusion::evaluate(const Evaluation& e) {
+  gatherPositions(e);
+  for (const Vec3& p : bead_x_)
+    if (!p.allFinite()) return std::numeric_limits<double>::infinity();
+  if (listIsStale()) rebuild();
+  if (crossesSinceHeld(e)) return std::numeric_limits<double>::infinity();
+  double* vertex_gradient = e.gradient && (!e.alone || e.alone == &membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
+  double* bead_gradient = e.gradient && (!e.alone || e.alone == &network_) ? e.gradient + 3 * network_.offset() : nullptr;
+  const auto& triangles = membrane_.topology().triangles;
+  double energy = 0.0;
+  active_pairs_ = 0;
+  for (const Pair& pair : pairs_) {
+    const Tri& t = triangles[pair.face];
+    const PairEnergy pe = pairEnergy(bead_x_[pair.bead], vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]],
+                                     e.gradient != nullptr);
+    if (!pe.active) continue;
+    ++active_pairs_;
+    if (!std::isfinite(pe.energy)) return std::numeric_limits<double>::infinity();
+    energy += pe.energy;
+    if (bead_gradient)
+      for (int i = 0; i < 3; ++i) bead_gradient[3 * beads_[pair.bead] + i] += pe.d_point[i];
+    if (vertex_gradient)
+      for (int v = 0; v < 3; ++v)
+        for (int i = 0; i < 3; ++i) vertex_gradient[3 * t[v] + i] += pe.d_vertices[v][i];
+  }
+  return energy;
+}
+
+}  // namespace cortex

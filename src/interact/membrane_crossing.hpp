@@ -1,0 +1,23 @@
+// The check that no filament passes through a membrane: every cylinder (segment between
+// consecutive beads) against every triangle near it. Run after each relaxation (which
+// remeshes within) and when a run starts; what it finds is an error, never corrected
+// silently (docs/coupling.md).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "filament/filament_network.hpp"
+#include "membrane/membrane.hpp"
+
+namespace cortex {
+
+struct MembraneCrossing {
+  Index filament, cylinder, face;
+  std::string describe(const Membrane& membrane) const;
+};
+
+// The first crossing in (filament, cylinder, triangle) order, if any.
+std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, const FilamentNetwork& network);
+
+}  // namespace cortex
