@@ -30,13 +30,15 @@ FILAMENT_DATASETS = {
 
 class Membrane:
     """A triangle mesh: vertices (n,3) nm, triangles (m,3) vertex indices,
-    mean_curvature (n) 1/nm or None when the file has none."""
+    mean_curvature (n) 1/nm or None when the file has none, contact_force (n,3) pN (the
+    filaments' push on each vertex) or None in runs without membrane–filament contact."""
 
-    def __init__(self, name, vertices, triangles, mean_curvature):
+    def __init__(self, name, vertices, triangles, mean_curvature, contact_force=None):
         self.name = name
         self.vertices = vertices
         self.triangles = triangles
         self.mean_curvature = mean_curvature
+        self.contact_force = contact_force
 
     def __repr__(self):
         return f"<Membrane {self.name!r}: {len(self.vertices)} vertices, {len(self.triangles)} triangles>"
@@ -45,7 +47,8 @@ class Membrane:
 class Filaments:
     """The filament network: one attribute per dataset of FILAMENT_DATASETS (beads,
     offsets, ids, types, lengths, monomers, cylinders, cylinder_filament, linkers,
-    linker_types, linker_tensions, motors, motor_types, motor_tensions, branch_points)."""
+    linker_types, linker_tensions, motors, motor_types, motor_tensions, branch_points),
+    and contact_force (k,3) pN per bead, or None in runs without membrane–filament contact."""
 
     def __init__(self, arrays):
         self.__dict__.update(arrays)
@@ -102,8 +105,9 @@ class Snapshot:
         out = {}
         for name, m in sorted(g["membranes"].items()):
             h = np.asarray(m["mean_curvature"][()], dtype=float) if "mean_curvature" in m else None
+            f = np.asarray(m["contact_force"][()], dtype=float) if "contact_force" in m else None
             out[name] = Membrane(name, np.asarray(m["vertices"][()], dtype=float),
-                                 np.asarray(m["triangles"][()], dtype=np.int64), h)
+                                 np.asarray(m["triangles"][()], dtype=np.int64), h, f)
         return out
 
     @cached_property
@@ -121,5 +125,8 @@ class Snapshot:
         if "filaments" not in g:
             return None
         fg = g["filaments"]
-        return Filaments({key: np.asarray(fg[key][()], dtype=dtype) if key in fg else np.zeros(shape, dtype)
-                          for key, (dtype, shape) in FILAMENT_DATASETS.items()})
+        arrays = {key: np.asarray(fg[key][()], dtype=dtype) if key in fg else np.zeros(shape, dtype)
+                  for key, (dtype, shape) in FILAMENT_DATASETS.items()}
+        # Per bead (k,3) pN, only in runs where membranes and filaments interact.
+        arrays["contact_force"] = np.asarray(fg["contact_force"][()], dtype=float) if "contact_force" in fg else None
+        return Filaments(arrays)

@@ -39,7 +39,7 @@ def flatten(summary):
 class RunTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.paths = {name: runs.path(name) for name in ("vesicle", "filaments", "species")}
+        cls.paths = {name: runs.path(name) for name in ("vesicle", "filaments", "species", "bundle")}
 
     def test_snapshots_match_h5py(self):
         with cortex.open(self.paths["vesicle"]) as run, h5py.File(run.trajectory_path, "r") as f:
@@ -70,6 +70,22 @@ class RunTest(unittest.TestCase):
             self.assertEqual(sum(len(p) for p in fil.polylines), len(fil.beads))
             self.assertEqual(fil.segments.shape, (len(fil.cylinders), 2, 3))
             self.assertGreater(len(fil.linkers) + len(fil.motors), 0, "the test run should bind some")
+
+    def test_contact_forces_are_action_and_reaction(self):
+        # Membrane–bead exclusion and filament excluded volume act between points of the
+        # run and no wall is present, so the contact forces on all vertices and beads sum
+        # to zero (translation invariance) while each side's sum is a push of pN.
+        with cortex.open(self.paths["bundle"]) as run:
+            s = run.snapshot(-1)
+            membrane, filaments = s.membranes["patch"], s.filaments
+            self.assertEqual(membrane.contact_force.shape, membrane.vertices.shape)
+            self.assertEqual(filaments.contact_force.shape, filaments.beads.shape)
+            on_membrane = membrane.contact_force.sum(axis=0)
+            on_filaments = filaments.contact_force.sum(axis=0)
+            self.assertGreater(on_membrane[2], 1.0)  # pushed up, towards +z
+            np.testing.assert_allclose(on_membrane + on_filaments, 0.0, atol=1e-9 * np.abs(on_membrane).max())
+        with cortex.open(self.paths["filaments"]) as run:
+            self.assertIsNone(run.snapshot(-1).filaments.contact_force)  # no membrane: not written
 
     def test_species_match_h5py(self):
         with cortex.open(self.paths["species"]) as run, h5py.File(run.trajectory_path, "r") as f:

@@ -72,8 +72,8 @@ XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
     const auto rows = [&](const char* dataset) {
       return static_cast<std::int64_t>(file.shape(std::string("/filaments") + dataset).at(0));
     };
-    snapshot.filaments = XdmfFilaments{rows("/beads"), rows("/cylinders"), rows("/linkers"), rows("/motors"),
-                                       rows("/branch_points")};
+    snapshot.filaments = XdmfFilaments{rows("/beads"),  rows("/cylinders"),     rows("/linkers"),
+                                       rows("/motors"), rows("/branch_points"), file.exists("/filaments/contact_force")};
   }
   if (file.exists("/compartments/species")) {
     XdmfCompartments& c = snapshot.compartments.emplace();
@@ -89,7 +89,7 @@ XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
     const auto rows = [&](const char* dataset) {
       return static_cast<std::int64_t>(file.shape(path + dataset).at(0));
     };
-    snapshot.membranes.push_back({name, rows("/vertices"), rows("/triangles")});
+    snapshot.membranes.push_back({name, rows("/vertices"), rows("/triangles"), file.exists(path + "/contact_force")});
   }
   return snapshot;
 }
@@ -114,7 +114,14 @@ XdmfMembrane writeMembrane(h5::File& file, const std::string& group,
   file.write(path + "/vertices", membrane.vertices, {n, 3});
   file.write(path + "/triangles", membrane.triangles, {m, 3});
   file.write(path + "/mean_curvature", membrane.mean_curvature, {n});
-  return {name, static_cast<std::int64_t>(n), static_cast<std::int64_t>(m)};
+  const bool forces = !membrane.contact_force.empty();
+  if (forces) {
+    if (membrane.contact_force.size() != 3 * n)
+      throw RunError(fmt::format("membrane '{}': {} contact force components for {} vertices", name,
+                                 membrane.contact_force.size(), n));
+    file.write(path + "/contact_force", membrane.contact_force, {n, 3});
+  }
+  return {name, static_cast<std::int64_t>(n), static_cast<std::int64_t>(m), forces};
 }
 
 // Segment i joins rows 2i and 2i+1 of an (n,2,3) end-position dataset read as (2n,3).
@@ -133,7 +140,7 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
       f.monomers.size() == n && f.cylinders.size() == 2 * m && f.cylinder_filament.size() == m &&
       f.linkers.size() == 6 * nl && f.linker_tensions.size() == nl && f.motors.size() == 6 * nm &&
       f.motor_tensions.size() == nm && f.branch_points.size() == 3 * b &&
-      f.offsets.back() == static_cast<std::int64_t>(k);
+      f.offsets.back() == static_cast<std::int64_t>(k) && (f.contact_force.empty() || f.contact_force.size() == 3 * k);
   if (!consistent) {
     throw RunError(fmt::format("inconsistent filament frame ({} bead coordinates, {} offsets, {} ids, {} "
                                "cylinder indices, {} linker coordinates, {} motor coordinates)",
@@ -161,8 +168,9 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
   file.write(path + "motor_tensions", f.motor_tensions, {nm});
   file.write(path + "motor_cells", pairCells(nm), {nm, 2});
   file.write(path + "branch_points", f.branch_points, {b, 3});
+  if (!f.contact_force.empty()) file.write(path + "contact_force", f.contact_force, {k, 3});
   return {static_cast<std::int64_t>(k), static_cast<std::int64_t>(m), static_cast<std::int64_t>(nl),
-          static_cast<std::int64_t>(nm), static_cast<std::int64_t>(b)};
+          static_cast<std::int64_t>(nm), static_cast<std::int64_t>(b), !f.contact_force.empty()};
 }
 
 }  // namespace

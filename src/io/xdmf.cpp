@@ -31,6 +31,16 @@ void openGrid(std::string& xml, const std::string& name, double time) {
                  escapeXml(name), time);
 }
 
+// A 3-vector per node (point), e.g. a force.
+void appendNodeVector(std::string& xml, const char* name, std::int64_t nodes, const std::string& dataset) {
+  fmt::format_to(std::back_inserter(xml),
+                 R"(          <Attribute Name="{}" AttributeType="Vector" Center="Node">
+            <DataItem Format="HDF" NumberType="Float" Precision="8" Dimensions="{} 3">{}</DataItem>
+          </Attribute>
+)",
+                 name, nodes, dataset);
+}
+
 void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const XdmfMembrane& membrane) {
   // Heavy data stays in the HDF5 files; each DataItem names "file:/dataset".
   const std::string data = escapeXml(fmt::format("{}:/membranes/{}", snapshotFile(snapshot.index), membrane.name));
@@ -45,9 +55,10 @@ void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const Xd
           <Attribute Name="mean_curvature" AttributeType="Scalar" Center="Node">
             <DataItem Format="HDF" NumberType="Float" Precision="8" Dimensions="{n}">{data}/mean_curvature</DataItem>
           </Attribute>
-        </Grid>
 )",
                  fmt::arg("m", membrane.triangles), fmt::arg("n", membrane.vertices), fmt::arg("data", data));
+  if (membrane.contact_force) appendNodeVector(xml, "contact_force", membrane.vertices, data + "/contact_force");
+  xml += "        </Grid>\n";
 }
 
 // A grid of 2-node line segments: `cells` (n,2) indexes the rows of `points` (k,3). For linkers
@@ -57,6 +68,7 @@ struct SegmentGrid {
   std::int64_t segments, points;
   std::string cells, positions;  // dataset paths
   std::vector<std::array<std::string, 4>> cell_attributes;  // name, dataset, NumberType, Precision
+  std::vector<std::array<std::string, 2>> node_vectors;     // name, dataset of (points, 3) floats
 };
 
 void appendSegmentGrid(std::string& xml, const SegmentGrid& grid) {
@@ -79,6 +91,7 @@ void appendSegmentGrid(std::string& xml, const SegmentGrid& grid) {
 )",
                    name, type, precision, m, dataset);
   }
+  for (const auto& [name, dataset] : grid.node_vectors) appendNodeVector(xml, name.c_str(), grid.points, dataset);
   xml += "        </Grid>\n";
 }
 
@@ -111,7 +124,10 @@ void appendFilamentGrid(std::string& xml, const XdmfSnapshot& snapshot, Filament
   switch (part) {
     case FilamentPart::kCylinders:
       appendSegmentGrid(xml, {f.cylinders, f.beads, data + "cylinders", data + "beads",
-                              {{"filament", data + "cylinder_filament", "Int", "4"}}});
+                              {{"filament", data + "cylinder_filament", "Int", "4"}},
+                              f.contact_force ? std::vector<std::array<std::string, 2>>{{"contact_force",
+                                                                                         data + "contact_force"}}
+                                              : std::vector<std::array<std::string, 2>>{}});
       break;
     case FilamentPart::kLinkers: binders("linker", f.linkers); break;
     case FilamentPart::kMotors: binders("motor", f.motors); break;

@@ -16,6 +16,7 @@ struct XdmfMembrane {
   std::string name;
   std::int64_t vertices = 0;
   std::int64_t triangles = 0;
+  bool contact_force = false;  // the snapshot has /membranes/NAME/contact_force
 };
 
 // Element counts of a snapshot's filaments group; a grid with no elements is left out.
@@ -25,6 +26,7 @@ struct XdmfFilaments {
   std::int64_t linkers = 0;
   std::int64_t motors = 0;
   std::int64_t branch_points = 0;
+  bool contact_force = false;  // the snapshot has /filaments/contact_force (per bead)
 };
 
 // The compartment grid of a snapshot: its shape and the species stored per compartment.

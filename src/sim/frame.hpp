@@ -15,6 +15,9 @@ struct MembraneFrame {
   std::vector<double> vertices;        // n*3, row-major (x0,y0,z0,x1,...), nm
   std::vector<std::int32_t> triangles; // m*3 vertex indices, counter-clockwise seen from outside
   std::vector<double> mean_curvature;  // n, 1/nm
+  // n*3, pN: the force the filaments put on each vertex (membrane–bead excluded volume);
+  // empty in runs where membranes and filaments do not interact.
+  std::vector<double> contact_force;
 };
 
 // The cytoskeleton, flattened. Filament i (its index, an identity for the whole run) owns
@@ -36,6 +39,9 @@ struct FilamentFrame {
   std::vector<std::int32_t> motor_types;       // n
   std::vector<double> motor_tensions;          // n, pN
   std::vector<double> branch_points;           // b*3, nm: each daughter's first bead
+  // k*3, pN: the force every contact term (walls, excluded volume, membranes) puts on
+  // each bead, the ratchet's load at the ends; empty unless membranes and filaments interact.
+  std::vector<double> contact_force;
   // Names of the type indices above: filament, linker and motor types.
   std::vector<std::string> type_names, linker_type_names, motor_type_names;
 };

@@ -44,7 +44,7 @@ FilamentFrame filamentFrame(const FilamentNetwork& net) {
 
 }  // namespace
 
-Frame makeFrame(const System& system) {
+Frame makeFrame(System& system) {
   Frame frame;
   frame.time = system.time();
   frame.step = system.step;
@@ -71,6 +71,17 @@ Frame makeFrame(const System& system) {
     }
   }
   if (const FilamentNetwork* net = system.filaments()) frame.filaments = filamentFrame(*net);
+  if (!system.couplingTerms().empty()) {
+    // Where bodies push on each other: the contact terms' forces on every point.
+    const Eigen::VectorXd force = system.forceField().contactForces(system.coordinates());
+    const auto slice = [&](const Body& body) {
+      const double* begin = force.data() + 3 * body.offset();
+      return std::vector<double>(begin, begin + 3 * body.numPoints());
+    };
+    for (std::size_t i = 0; i < frame.membranes.size(); ++i)
+      frame.membranes[i].contact_force = slice(*system.membranes()[i]);
+    if (frame.filaments) frame.filaments->contact_force = slice(*system.filaments());
+  }
   return frame;
 }
 

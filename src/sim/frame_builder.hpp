@@ -6,6 +6,8 @@
 
 namespace cortex {
 
-Frame makeFrame(const System& system);
+// Not const: in runs where membranes and filaments interact, the contact forces are
+// evaluated (the force field's terms cache their geometry).
+Frame makeFrame(System& system);
 
 }  // namespace cortex

@@ -78,6 +78,21 @@ Frame gridFrame(double time) {
   return frame;
 }
 
+TEST(XdmfLayout, ContactForcesArePointVectorsWhereASnapshotHasThem) {
+  // A run where membranes and filaments interact writes contact_force for the membrane
+  // and the beads; an older snapshot (a resume across versions) has none, and its grids
+  // must not point at datasets that are not there.
+  const XdmfSnapshot without{0, 0.0, {{"cell", 10, 16}}, XdmfFilaments{4, 3, 0, 0, 0}, std::nullopt};
+  const XdmfSnapshot with{1, 0.5, {{"cell", 12, 20, true}}, XdmfFilaments{6, 4, 0, 0, 0, true}, std::nullopt};
+  const std::string xml = trajectoryXdmf({without, with});
+  const std::string cell = collection(xml, "cell");
+  EXPECT_EQ(countOccurrences(cell, R"(<Attribute Name="contact_force" AttributeType="Vector" Center="Node">)"), 1u);
+  EXPECT_NE(cell.find(R"(Dimensions="12 3">snapshots/000001.h5:/membranes/cell/contact_force<)"), std::string::npos);
+  const std::string filaments = collection(xml, "filaments");
+  EXPECT_EQ(countOccurrences(filaments, R"(<Attribute Name="contact_force" AttributeType="Vector" Center="Node">)"), 1u);
+  EXPECT_NE(filaments.find(R"(Dimensions="6 3">snapshots/000001.h5:/filaments/contact_force<)"), std::string::npos);
+}
+
 TEST(XdmfLayout, CompartmentPointsAndIndexAttributesSurviveAResume) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("cortex_xdmf_layout_{}", ::getpid());
   fs::remove_all(dir);
