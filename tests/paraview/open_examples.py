@@ -25,9 +25,12 @@ def short_end_time(config):
 @contextlib.contextmanager
 def virtual_display(xvfb):
     """An X server for the block; DISPLAY set. -displayfd reports the display number
-    once the server accepts connections."""
+    once the server accepts connections; -noreset keeps it from resetting whenever its
+    last client leaves (each pvpython is one), when the next one to connect can be refused
+    ("bad X server connection")."""
     read, write = os.pipe()
-    server = subprocess.Popen([xvfb, "-displayfd", str(write), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+    server = subprocess.Popen([xvfb, "-displayfd", str(write), "-noreset", "-screen", "0", "1280x1024x24",
+                               "-nolisten", "tcp"],
                               pass_fds=(write,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     os.close(write)
     with os.fdopen(read) as pipe:
@@ -76,9 +79,9 @@ def check_examples(cortex, pvpython, examples, workdir):
         if check.returncode != 0:
             failed.append(f"{example.name}: ParaView check exited {check.returncode}")
         picture = out / "paraview.png"
-        # Under load, ParaView's off-screen window on Xvfb now and then aborts while being
-        # created (SIGABRT in vtkXOpenGLRenderWindow::CreateAWindow, seen with other heavy
-        # tests beside it); a second attempt tells that apart from a picture that fails.
+        # A window refused by the X server aborts pvpython (SIGABRT, "bad X server
+        # connection"; seen under load before -noreset): a second attempt tells that apart
+        # from a picture that fails.
         for attempt in range(2):
             render = subprocess.run([pvpython, str(tools / "paraview_picture.py"), str(out), "-o",
                                      str(picture), "--size", "400,300"], capture_output=True, text=True)
