@@ -5,10 +5,11 @@
 // S fades a triangle out smoothly as the bead's distance d_t to its nearest point goes
 // from cutoff/2 to cutoff (S = 1 − 10x³ + 15x⁴ − 6x⁵): a hard cut-off would make the
 // energy jump by k A_t/d⁴ whenever a triangle of area A_t crosses it, which stalls line
-// searches. What the fade and cut-off leave out of the full integral is at most
-// k π/(cutoff/2)² of energy and 2π k/(cutoff/2)³ of force for a bead over a flat membrane
-// (0.79 pN·nm and 0.079 pN with the defaults, next to 12.6 pN·nm and 5.0 pN at 5 nm);
-// docs/coupling.md. A bead on a triangle has infinite energy: minimizers back off.
+// searches. Over a flat membrane what the fade leaves out depends on the distance alone,
+// so for a bead closer than cutoff/2 it is a constant energy ≤ k π/(cutoff/2)² (3.1 pN·nm
+// with the defaults) and no force; farther out the push fades to zero at the cut-off
+// (the full membrane's is ≤ 2π k/(cutoff/2)³ = 0.63 pN there); docs/coupling.md. A bead
+// on a triangle has infinite energy: minimizers back off.
 //
 // Pairs come from a Verlet list of (triangle, bead) within cutoff + skin, found with a
 // cell list over triangle centroids. A triangle's points move by at most the largest move

@@ -60,6 +60,13 @@ TEST(MembraneBeadExclusion, ABeadOverAPlaneFeelsTheClosedForm) {
   EXPECT_LT(energy, lessBeyond(p.cutoff + 10.0 * std::sqrt(2.0)));
   // Those bounds are 4.6% apart here: the fade and cut-off remove little of the plane's.
   EXPECT_GT(term.activePairs(), 10u);
+  // And what they remove depends on the distance alone, so over a plane it pushes with
+  // nothing: the force is the full plane's 2πk/h³, up to whole triangles entering the
+  // fade by their nearest point.
+  std::vector<double> g(s.x.size(), 0.0);
+  term.evaluate({s.x.data(), g.data(), 2});
+  const double push = g.back();  // the tip is below the membrane and pushed down: dE/dz > 0, pN
+  EXPECT_NEAR(push / (2 * constants::kPi * p.stiffness / (h * h * h)), 1.0, 1e-3);  // measured 1.1e-4
 }
 
 TEST(MembraneBeadExclusion, OneBodyAloneSeesTheOtherWhereItIsHeld) {
