@@ -157,8 +157,7 @@ void FilamentChemistry::update(const std::vector<std::array<Vec3, 2>>& end_force
   flush();
 }
 
-// Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
-// exp(-f delta / kT); a pulling force does not speed it beyond free growth.
+// Every end's load from the contact forces of the relaxation just done.
 void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces) {
   const auto& fils = net_.filaments();
   if (end_forces.size() != fils.size())
@@ -167,27 +166,28 @@ void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end
   load_.assign(fils.size(), {0.0, 0.0});
   relaxed_force_ = end_forces;
   probe_force_.assign(fils.size(), {Vec3::Zero(), Vec3::Zero()});
-  for (std::size_t i = 0; i < fils.size(); ++i) {
-    const Filament& f = fils[i];
-    const double delta = net_.type(f.type).monomer_size;
+  for (std::size_t i = 0; i < fils.size(); ++i)
     for (int e = 0; e < 2; ++e) {
-      if (probe_) probe_force_[i][e] = probe_->forceAt(e ? f.beads.back() : f.beads.front(), e == 1);
-      const Vec3 u = e ? f.plusDirection() : f.minusDirection();
-      const double load = std::max(0.0, -end_forces[i][e].dot(u));
-      load_[i][e] = load;
-      ratchet_[i][e] = std::exp(-load * delta / kT_);
+      const Index f = static_cast<Index>(i);
+      if (probe_) probe_force_[i][e] = probe_->forceAt(endBead(f, e == 1), e == 1);
+      loadEnd(f, e == 1, end_forces[i][e]);
     }
-  }
+}
+
+// Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
+// exp(-f delta / kT); a pulling force does not speed it beyond free growth.
+void FilamentChemistry::loadEnd(Index i, bool plus_end, const Vec3& force) {
+  const Filament& f = net_.filaments()[i];
+  const int e = plus_end ? 1 : 0;
+  const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
+  load_[i][e] = std::max(0.0, -force.dot(u));
+  ratchet_[i][e] = std::exp(-load_[i][e] * net_.type(f.type).monomer_size / kT_);
 }
 
 void FilamentChemistry::reload(Index i, bool plus_end) {
   if (!probe_ || static_cast<std::size_t>(i) >= relaxed_force_.size()) return;  // new filaments: unloaded
-  const Filament& f = net_.filaments()[i];
   const int e = plus_end ? 1 : 0;
-  const Vec3 force = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(plus_end ? f.beads.back() : f.beads.front(), plus_end);
-  const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
-  load_[i][e] = std::max(0.0, -force.dot(u));
-  ratchet_[i][e] = std::exp(-load_[i][e] * net_.type(f.type).monomer_size / kT_);
+  loadEnd(i, plus_end, relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(endBead(i, plus_end), plus_end));
 }
 
 // Bound proteins fire in the compartment of their first site.

@@ -80,8 +80,14 @@ class FilamentChemistry final : public ReactionHook {
   Index channelOf(FilamentReaction kind, Index type) const;
   Index compartmentOf(const Vec3& x) const { return grid_.locate(x); }
   void computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces);
+  // Load and ratchet factor of filament f's end under `force` (pN, Brownian ratchet).
+  void loadEnd(Index f, bool plus_end, const Vec3& force);
   // The ratchet of filament f's end after an event moved it (setEndLoadProbe).
   void reload(Index f, bool plus_end);
+  const Vec3& endBead(Index f, bool plus_end) const {
+    const Filament& fil = net_.filaments()[f];
+    return plus_end ? fil.beads.back() : fil.beads.front();
+  }
   void locateBound();
   void findCandidates();
   // Rate factors: pending_ holds the sums of weights, updated by +-contributions as the

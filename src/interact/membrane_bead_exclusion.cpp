@@ -51,20 +51,18 @@ void MembraneBeadExclusion::gatherPositions(const Evaluation& e) {
   }
   const Index nv = membrane_.mesh().numVertices();
   vertex_x_.resize(static_cast<std::size_t>(nv));
-  if (!e.alone || e.alone == &membrane_) {
+  if (e.moves(membrane_)) {
     const double* x = e.x + 3 * membrane_.offset();
     for (Index v = 0; v < nv; ++v) vertex_x_[v] = Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
   } else {
     vertex_x_ = membrane_.mesh().positions();
   }
+  // Where the network holds its beads: the positions when they do not move here, and
+  // the side of the membrane they were on (crossesSinceHeld).
+  held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+  network_.gather(held_beads_.data());
   bead_x_.resize(beads_.size());
-  const double* x = e.x + 3 * network_.offset();
-  std::vector<double> stored;
-  if (e.alone && e.alone != &network_) {
-    stored.resize(3 * static_cast<std::size_t>(network_.numPoints()));
-    network_.gather(stored.data());
-    x = stored.data();
-  }
+  const double* x = e.moves(network_) ? e.x + 3 * network_.offset() : held_beads_.data();
   for (std::size_t i = 0; i < beads_.size(); ++i) {
     const double* b = x + 3 * beads_[i];
     bead_x_[i] = Vec3(b[0], b[1], b[2]);
@@ -157,11 +155,8 @@ TriangleCells MembraneBeadExclusion::heldCells() const {
 }
 
 bool MembraneBeadExclusion::crossesSinceHeld(const Evaluation& e) {
-  const bool vertices_move = !e.alone || e.alone == &membrane_, beads_move = !e.alone || e.alone == &network_;
-  if (!vertices_move && !beads_move) return false;
+  if (!e.moves(membrane_) && !e.moves(network_)) return false;
   const std::vector<Vec3>& held_vertices = membrane_.mesh().positions();
-  held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
-  network_.gather(held_beads_.data());
   if (held_vertices.size() != vertex_x_.size()) return false;  // remeshed since: nothing to compare with
   const auto& triangles = membrane_.topology().triangles;
   for (const Pair& pair : pairs_) {
@@ -187,8 +182,8 @@ double MembraneBeadExclusion::evaluate(const Evaluation& e) {
     if (!p.allFinite()) return std::numeric_limits<double>::infinity();
   if (listIsStale()) rebuild();
   if (crossesSinceHeld(e)) return std::numeric_limits<double>::infinity();
-  double* vertex_gradient = e.gradient && (!e.alone || e.alone == &membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
-  double* bead_gradient = e.gradient && (!e.alone || e.alone == &network_) ? e.gradient + 3 * network_.offset() : nullptr;
+  double* vertex_gradient = e.gradient && e.moves(membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
+  double* bead_gradient = e.gradient && e.moves(network_) ? e.gradient + 3 * network_.offset() : nullptr;
   const auto& triangles = membrane_.topology().triangles;
   double energy = 0.0;
   active_pairs_ = 0;

@@ -101,7 +101,7 @@ class MembraneBeadExclusion final : public EnergyTerm {
   double skin_;
   std::vector<Index> beads_;  // selected beads, as indices into the network's bead layout
   std::vector<Vec3> vertex_x_, bead_x_;
-  std::vector<double> held_beads_;  // scratch: the network's own positions
+  std::vector<double> held_beads_;  // the network's own positions at the last evaluation
   std::vector<Pair> pairs_;
   // At the last build.
   bool built_ = false;

@@ -1,20 +1,16 @@
 #include "mech/constrained_lbfgs.hpp"
 
+#include "mech/minimizer.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace cortex {
 namespace {
 
-// Largest magnitude; infinity when any entry is not finite (Eigen's maxCoeff may skip a
-// NaN, and a residual of NaN must not pass for converged).
-double maxAbs(const Eigen::VectorXd& v) {
-  if (!v.allFinite()) return std::numeric_limits<double>::infinity();
-  return v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
-}
+using detail::maxAbs;
 
 // Linearization of the constraints at an iterate: Jacobian J, W = P^-1 J^T, S^-1.
 struct ConstraintFrame {

@@ -19,6 +19,8 @@ struct Evaluation {
   double* gradient = nullptr;
   std::uint64_t version = 0;
   const Body* alone = nullptr;
+  // Whether `body`'s points are in x (and get gradient): every body's unless one is alone.
+  bool moves(const Body& body) const { return !alone || alone == &body; }
 };
 
 class EnergyTerm {

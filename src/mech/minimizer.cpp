@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -16,7 +17,10 @@ MinimizationResult minimize(Objective& f, Eigen::VectorXd& x, const MinimizerSet
 
 namespace detail {
 
-double maxAbs(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+double maxAbs(const Eigen::VectorXd& v) {
+  if (!v.allFinite()) return std::numeric_limits<double>::infinity();
+  return v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
+}
 
 void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* where) {
   if (!std::isfinite(energy))

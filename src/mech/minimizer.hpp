@@ -55,6 +55,8 @@ void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* whe
 // Runaway guard: the energy is unbounded below if it reaches -1e30 or the coordinates
 // travel from `start` more than 100 times the extent of `start` (plus 1e4 nm).
 void checkBounded(double energy, const Eigen::VectorXd& x, const Eigen::VectorXd& start);
+// Largest magnitude (0 for an empty vector); infinity when any entry is not finite:
+// Eigen's maxCoeff may skip a NaN, and a residual of NaN must not pass for converged.
 double maxAbs(const Eigen::VectorXd& v);
 }  // namespace detail
 
