@@ -56,9 +56,20 @@ def curvature_norm(limit):
     return colors.Normalize(vmin=-limit, vmax=limit)
 
 
-def add_membrane(ax, vertices, membrane, norm, cmap, edges=False):
+def facing_half(vertices, triangles, elev, azim):
+    """Mask of the triangles whose centroids lie on the viewer's side of the plane through
+    the mesh's centre facing the view (elevation and azimuth in degrees, as matplotlib's
+    view_init): dropping them cuts the near half away."""
+    e, a = np.radians(elev), np.radians(azim)
+    towards_viewer = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    centroids = vertices[triangles].mean(axis=1)
+    return (centroids - vertices.mean(axis=0)) @ towards_viewer > 0
+
+
+def add_membrane(ax, vertices, membrane, norm, cmap, edges=False, hide=None):
     """A membrane as shaded triangles coloured by mean curvature; `vertices` may be the
-    membrane's own or the same points in another frame."""
+    membrane's own or the same points in another frame; `hide`: a mask of triangles to
+    leave out."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
     tri = membrane.triangles
     a, b, c = (vertices[tri[:, k]] for k in range(3))
@@ -71,6 +82,8 @@ def add_membrane(ax, vertices, membrane, norm, cmap, edges=False):
     else:
         rgba = np.array(cmap(norm(values)))
     rgba[:, :3] *= shade[:, None]
+    if hide is not None:
+        tri, rgba = tri[~hide], rgba[~hide]
     ax.add_collection3d(Poly3DCollection(vertices[tri], facecolors=rgba,
                                          edgecolors=(0, 0, 0, 0.25) if edges else "none",
                                          linewidths=0.2 if edges else 0.0))

@@ -59,6 +59,26 @@ class MovieTest(unittest.TestCase):
         assert_png(self, os.path.join(self.tmp.name, "vesicle_montage.png"))
         self.assertFalse(os.path.exists(out))
 
+    def test_cutaway_leaves_out_the_near_half(self):
+        # A sphere seen from the default view: the near half is the triangles whose
+        # centroids point towards the viewer, about half of them.
+        import numpy as np
+        from cortex import plotting
+        run = cortex.open(self.runs["vesicle"])
+        m = next(iter(run.snapshot(0).membranes.values()))
+        hide = plotting.facing_half(m.vertices, m.triangles, 20.0, -60.0)
+        self.assertAlmostEqual(hide.mean(), 0.5, delta=0.05)
+        e, a = np.radians(20.0), np.radians(-60.0)
+        viewer = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+        near = (m.vertices[m.triangles].mean(axis=1) - m.vertices.mean(axis=0)) @ viewer
+        self.assertTrue(hide[np.argmax(near)])  # the triangle nearest the viewer goes
+        self.assertFalse(hide[np.argmin(near)])  # the farthest stays
+        out = os.path.join(self.tmp.name, "cutaway.png")
+        code, stdout, stderr = command("movie", self.runs["vesicle"], "--montage", "--cutaway", "--snapshot", "0",
+                                       "-o", out)
+        self.assertEqual(code, 0, stderr)
+        assert_png(self, out)
+
     def test_montage_without_ffmpeg(self):
         empty = os.path.join(self.tmp.name, "no_programs")
         os.makedirs(empty, exist_ok=True)

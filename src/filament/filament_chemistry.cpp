@@ -184,10 +184,19 @@ void FilamentChemistry::loadEnd(Index i, bool plus_end, const Vec3& force) {
   ratchet_[i][e] = std::exp(-load_[i][e] * net_.type(f.type).monomer_size / kT_);
 }
 
+// The membranes stand still during a window, but in the quasi-static picture of the
+// ratchet they relax much faster than an end grows: one the end has withdrawn from would
+// have followed it. So an end's load never drops below the relaxed one within a window
+// (taking the probe's lower value after a shrink step overestimated the stall force
+// against a tensed patch by 20%), and it rises to the probe's when the end advances into
+// the membrane as it stood (which keeps a second growth step from carrying it through).
 void FilamentChemistry::reload(Index i, bool plus_end) {
   if (!probe_ || static_cast<std::size_t>(i) >= relaxed_force_.size()) return;  // new filaments: unloaded
   const int e = plus_end ? 1 : 0;
-  loadEnd(i, plus_end, relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(endBead(i, plus_end), plus_end));
+  const Vec3 probed = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(endBead(i, plus_end), plus_end);
+  const Filament& f = net_.filaments()[i];
+  const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
+  loadEnd(i, plus_end, probed.dot(u) < relaxed_force_[i][e].dot(u) ? probed : relaxed_force_[i][e]);
 }
 
 // Bound proteins fire in the compartment of their first site.

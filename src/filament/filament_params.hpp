@@ -42,6 +42,9 @@ struct FilamentInit {
   // random: minus ends uniform in [region_min, region_max] (default: the boundary's
   // box, shrunk so that whole filaments fit), directions uniform on the sphere.
   std::optional<std::array<Vec3, 2>> region;
+  // random: also wholly inside this closed membrane, beads at least the membrane–filament
+  // cut-off from it (empty: anywhere in the region).
+  std::string inside;
   // bundle: parallel filaments on a hexagonal lattice around `center`, axis `direction`,
   // neighbours `spacing` nm apart; filaments are centred on `center` along the axis.
   Vec3 center = Vec3::Zero();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/error.hpp"
 #include "filament/walls.hpp"
@@ -22,22 +23,26 @@ bool fits(const Walls& walls, const Vec3& minus_end, const Vec3& direction, doub
 }
 
 void placeRandom(const FilamentInit& init, std::size_t entry, const FilamentType& type, const Walls& walls,
-                 RandomStream& random, std::vector<FilamentSeed>& out) {
+                 const PlacementRegion* inside, RandomStream& random, std::vector<FilamentSeed>& out) {
   const int monomers = monomersOf(init, type);
   const double length = monomers * type.monomer_size;
-  const Vec3 lo = init.region ? (*init.region)[0] : walls.min;
-  const Vec3 hi = init.region ? (*init.region)[1] : walls.max;
+  Vec3 lo = init.region ? (*init.region)[0] : walls.min;
+  Vec3 hi = init.region ? (*init.region)[1] : walls.max;
+  if (inside) lo = lo.cwiseMax(inside->min), hi = hi.cwiseMin(inside->max);
+  const std::string within =
+      inside ? fmt::format("inside membrane \"{}\" (with a margin) and the boundary", init.inside) : "inside the boundary";
   for (int n = 0; n < init.count; ++n) {
     int tries = 0;
     for (;; ++tries) {
-      if (tries == kMaxTries)
-        throw InputError(fmt::format("filaments.{}: filament {} of {} ({:g} nm) does not fit inside the boundary "
-                                     "(with a {:g} nm margin) after {} tries; shorten it or widen the region",
-                                     entry, n, init.count, length, walls.margin, kMaxTries));
+      if (tries == kMaxTries || (lo.array() > hi.array()).any() || (inside && length > (hi - lo).norm()))
+        throw InputError(fmt::format("filaments.{}: filament {} of {} ({:g} nm) does not fit {} (with a {:g} nm "
+                                     "margin) after {} tries; shorten it or widen the region",
+                                     entry, n, init.count, length, within, walls.margin, tries));
       Vec3 minus_end;
       for (int k = 0; k < 3; ++k) minus_end[k] = lo[k] + (hi[k] - lo[k]) * random.uniform();
       const Vec3 direction = uniformDirection(random);
-      if (fits(walls, minus_end, direction, length)) {
+      if (fits(walls, minus_end, direction, length) &&
+          (!inside || inside->holds(minus_end, minus_end + direction * length))) {
         out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end, init.clamped_minus_end});
         break;
       }
@@ -91,7 +96,8 @@ double placementMargin(const FilamentConfig& config) {
 }
 
 std::vector<FilamentSeed> placeFilaments(const FilamentConfig& config, const Vec3& box_min, const Vec3& box_max,
-                                         RandomStream& random) {
+                                         RandomStream& random,
+                                         const std::vector<std::optional<PlacementRegion>>& regions) {
   const Walls walls = wallsOf(config, box_min, box_max, placementMargin(config));
   std::vector<FilamentSeed> seeds;
   for (std::size_t i = 0; i < config.initial.size(); ++i) {
@@ -100,7 +106,7 @@ std::vector<FilamentSeed> placeFilaments(const FilamentConfig& config, const Vec
     if (init.placement == FilamentInit::Placement::kBundle)
       placeBundle(init, i, type, walls, seeds);
     else
-      placeRandom(init, i, type, walls, random, seeds);
+      placeRandom(init, i, type, walls, i < regions.size() && regions[i] ? &*regions[i] : nullptr, random, seeds);
   }
   return seeds;
 }

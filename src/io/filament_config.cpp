@@ -122,7 +122,8 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
   f.fixed_minus_end = r.boolean("fixed_minus_end", f.fixed_minus_end) || f.clamped_minus_end;
   if (r.choice("placement", "random", {"random", "bundle"}) == "bundle") {
     f.placement = FilamentInit::Placement::kBundle;
-    if (r.has("region")) r.fail("region", "is for placement = \"random\"");
+    for (const char* k : {"region", "inside"})
+      if (r.has(k)) r.fail(k, "is for placement = \"random\"");
     f.center = r.has("center") ? readVec(r, "center", "nm") : space.centre;
     if (r.has("direction")) {
       const Vec3 d = readVec(r, "direction", "");
@@ -139,6 +140,7 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
       if (!(lo.array() < hi.array()).all()) r.fail("region", "min must be below max on every axis");
       f.region = std::array<Vec3, 2>{lo, hi};
     }
+    f.inside = r.string("inside", "");  // a membrane's name, checked when the System is built
   }
   r.finish();
   return f;

@@ -1,11 +1,14 @@
 #include "sim/filament_builder.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
-#include "filament/filament_placement.hpp"
+#include "interact/inside_membrane.hpp"
 
 namespace cortex {
 namespace {
@@ -62,7 +65,8 @@ void checkRestored(const FilamentConfig& config, const FilamentState& s) {
 
 std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& config, const Vec3& box_min,
                                                       const Vec3& box_max, std::uint64_t seed,
-                                                      const FilamentState* restored) {
+                                                      const FilamentState* restored,
+                                                      const std::vector<std::optional<PlacementRegion>>& regions) {
   auto network = std::make_unique<FilamentNetwork>(config);
   if (restored) {
     checkRestored(config, *restored);
@@ -71,7 +75,7 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
     return network;
   }
   RandomStream random(seed, StreamId::kFilamentPlacement);
-  for (const FilamentSeed& s : placeFilaments(config, box_min, box_max, random)) {
+  for (const FilamentSeed& s : placeFilaments(config, box_min, box_max, random, regions)) {
     const FilamentType& t = config.types[s.type];
     Filament f = makeStraightFilament(s.type, s.minus_end, s.direction, s.monomers, t.cylinder_monomers, t.monomer_size);
     f.minus_anchored = s.fixed_minus_end;
@@ -79,6 +83,28 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
     network->addFilament(std::move(f));
   }
   return network;
+}
+
+std::vector<std::optional<PlacementRegion>> placementRegions(const FilamentConfig& config,
+                                                             const std::vector<const Membrane*>& membranes,
+                                                             double margin) {
+  std::vector<std::optional<PlacementRegion>> regions(config.initial.size());
+  for (std::size_t i = 0; i < config.initial.size(); ++i) {
+    const std::string& name = config.initial[i].inside;
+    if (name.empty()) continue;
+    const auto it = std::find_if(membranes.begin(), membranes.end(), [&](const Membrane* m) { return m->name() == name; });
+    if (it == membranes.end()) throw InputError(fmt::format("filaments.{}.inside: no membrane is named \"{}\"", i, name));
+    const Membrane& m = **it;
+    if (!m.isClosed())
+      throw InputError(fmt::format("filaments.{}.inside: membrane \"{}\" is open and has no inside", i, name));
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Vec3& x : m.mesh().positions()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    const SurfaceMesh* mesh = &m.mesh();
+    regions[i] = PlacementRegion{lo, hi, [mesh, margin](const Vec3& a, const Vec3& b) {
+                                   return segmentInside(*mesh, a, b, margin);
+                                 }};
+  }
+  return regions;
 }
 
 FilamentState filamentState(const FilamentNetwork& network) {

@@ -5,16 +5,28 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "filament/filament_network.hpp"
+#include "filament/filament_placement.hpp"
+#include "membrane/membrane.hpp"
 #include "sim/system_state.hpp"
 
 namespace cortex {
 
 // box: the compartment grid's box (where filaments go without a [boundary]).
+// regions: where entries with `inside` may go (placementRegions), one per entry.
 std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& config, const Vec3& box_min,
                                                       const Vec3& box_max, std::uint64_t seed,
-                                                      const FilamentState* restored);
+                                                      const FilamentState* restored,
+                                                      const std::vector<std::optional<PlacementRegion>>& regions = {});
+
+// For each [[filaments]] entry with `inside`: the named closed membrane's bounding box and
+// the test that a filament lies inside it, every point at least `margin` nm from it.
+// InputError when no membrane has that name or it is open.
+std::vector<std::optional<PlacementRegion>> placementRegions(const FilamentConfig& config,
+                                                             const std::vector<const Membrane*>& membranes,
+                                                             double margin);
 
 // The state a checkpoint stores.
 FilamentState filamentState(const FilamentNetwork& network);

@@ -83,8 +83,20 @@ SweptValue sweptValue(const toml::node& node, const std::string& key, const Swee
     quoted << *s;  // toml++ writes a TOML string with its escapes
     v.toml = quoted.str();
     v.text = s->get();
+  } else if (const auto* list = node.as_array()) {
+    // A vector such as a direction: passed on as written, recorded as its TOML text.
+    v.toml = "[";
+    for (const toml::node& item : *list) {
+      if (!item.is_integer() && !item.is_floating_point())
+        fail(&item, key, "an array value holds numbers only, e.g. [0.5, 0.0, 0.866]");
+      v.toml += (v.toml.size() > 1 ? ", " : "") + (item.is_integer() ? fmt::format("{}", item.as_integer()->get())
+                                                                        : tomlFloat(item.as_floating_point()->get()));
+    }
+    v.toml += "]";
+    if (list->empty()) fail(&node, key, "an array value needs at least one number");
+    v.text = v.toml;
   } else {
-    fail(&node, key, "must be a number, a boolean or a string");
+    fail(&node, key, "must be a number, a boolean, a string or an array of numbers");
   }
   return v;
 }
@@ -181,7 +193,6 @@ Points listedPoints(SweepSpec& spec, const toml::array& list, bool seeds_given, 
     entries.emplace_back();
     for (const Setting& s : settingsInOrder(*list[m].as_table())) {
       const std::string name = fmt::format("members.{}.{}", m, s.key);
-      if (s.value->is_array()) fail(s.value, name, "must be one value (a member sets one value per key)");
       SweptValue v = sweptValue(*s.value, name, fail);
       const std::size_t k = keyIndex(spec, s, !v.number, seeds_given, fail);
       entries.back().emplace_back(k, std::move(v));

@@ -102,6 +102,28 @@ parallel = 3
   EXPECT_EQ(memberOverrides(spec, spec.members[1]), (std::vector<std::string>{"a.x=2.0", "b.y='fast'"}));
 }
 
+TEST(SweepSpec, AnArrayOfNumbersIsOneValue) {
+  // A vector key (a bundle's direction) swept as a whole, in a grid and in members; the
+  // sweep table records it as its TOML text.
+  TempDir dir;
+  const SweepSpec grid = read(dir, R"(base = "run.toml"
+[grid]
+"filaments.0.direction" = [[0, 0, 1], [0.5, 0.0, 0.866]]
+)");
+  ASSERT_EQ(grid.members.size(), 2u);
+  EXPECT_EQ(grid.key_is_string, (std::vector<bool>{true}));
+  EXPECT_EQ(memberOverrides(grid, grid.members[0]), (std::vector<std::string>{"filaments.0.direction=[0, 0, 1]"}));
+  EXPECT_EQ(memberOverrides(grid, grid.members[1]),
+            (std::vector<std::string>{"filaments.0.direction=[0.5, 0.0, 0.866]"}));
+  EXPECT_EQ(grid.members[1].values[0]->text, "[0.5, 0.0, 0.866]");
+  const SweepSpec listed = read(dir, R"(base = "run.toml"
+[[members]]
+"a.v" = [1.0, 2.0]
+"a.x" = 3.0
+)");
+  EXPECT_EQ(memberOverrides(listed, listed.members[0]), (std::vector<std::string>{"a.v=[1.0, 2.0]", "a.x=3.0"}));
+}
+
 TEST(SweepSpec, RecognisesASweepFileByItsBaseKey) {
   TempDir dir;
   EXPECT_TRUE(isSweepFile(writeConfig(dir.path(), "base = \"x.toml\"\nseeds = 2\n", "s.toml")));
@@ -126,11 +148,13 @@ TEST(SweepSpec, BadSweepFilesNameFileLineKeyAndProblem) {
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = []\n", {":3:", "grid.a.x", "non-empty list"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = 1.0\n", {"grid.a.x", "non-empty list"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1.0, \"b\"]\n", {"grid.a.x", "mixes strings"});
-  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[1.0]]\n", {"grid.a.x", "a number, a boolean or a string"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [{ b = 1 }]\n", {"grid.a.x", "an array of numbers"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[1.0, \"b\"]]\n", {"grid.a.x", "numbers only"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[]]\n", {"grid.a.x", "at least one number"});
   expect("base = \"r.toml\"\n[grid]\n\"a..x\" = [1.0]\n", {"a..x", "not a key path"});
   expect("base = \"r.toml\"\nseeds = 2\n[grid]\n\"simulation.seed\" = [1]\n", {"simulation.seed", "seeds"});
   expect("base = \"r.toml\"\n[grid]\n\"a\" = [1]\n[[members]]\n\"a\" = 1\n", {"members", "not both"});
-  expect("base = \"r.toml\"\n[[members]]\n\"a\" = [1, 2]\n", {"members.0.a", "one value"});
+  expect("base = \"r.toml\"\n[[members]]\n\"a\" = [1, [2]]\n", {"members.0.a", "numbers only"});
   expect("base = \"r.toml\"\n[[members]]\n\"a\" = 1\n[[members]]\n\"a\" = \"x\"\n", {"a", "mixes strings"});
   expect("base = \"r.toml\"\n[grid]\n\"a\" = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n\"b\" = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n"
          "\"c\" = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n\"d\" = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n"

@@ -44,6 +44,9 @@ def add_arguments(p):
     p.add_argument("--cmap", default="RdBu", help="diverging colormap, low = red (default RdBu)")
     p.add_argument("--elev", type=float, default=20.0, help="view elevation in degrees (default 20)")
     p.add_argument("--azim", type=float, default=-60.0, help="view azimuth in degrees (default -60)")
+    p.add_argument("--cutaway", action="store_true",
+                   help="leave out the near half of each membrane (the triangles between its centre and "
+                        "the viewer), to see filaments inside a vesicle")
 
 
 class Scene:
@@ -73,6 +76,7 @@ class Scene:
         self.norm = plotting.curvature_norm(self.limit)
         self.cmap = plotting.pyplot().get_cmap(args.cmap)
         self.view = (args.elev, args.azim)
+        self.cutaway = args.cutaway
 
     def membranes(self, snapshot):
         if not snapshot.membranes:
@@ -85,7 +89,8 @@ class Scene:
         snapshot = self.run.snapshot(index)
         parts = [f"t = {snapshot.time:.4g} s"]
         for m in self.membranes(snapshot):
-            plotting.add_membrane(ax, m.vertices, m, self.norm, self.cmap)
+            hide = plotting.facing_half(m.vertices, m.triangles, *self.view) if self.cutaway else None
+            plotting.add_membrane(ax, m.vertices, m, self.norm, self.cmap, hide=hide)
             if geometry.is_closed(m.triangles):
                 parts.append(f"v = {geometry.reduced_volume(*geometry.area_volume(m.vertices, m.triangles)):.3f}")
         f = snapshot.filaments

@@ -1,0 +1,39 @@
+#include "sim/surface_graph.hpp"
+
+#include <stdexcept>
+
+#include "mesh/cotan.hpp"
+
+namespace cortex {
+
+DualCellGraph dualCellGraph(const SurfaceMesh& mesh) {
+  const auto& x = mesh.positions();
+  const Index n = mesh.numVertices();
+  DualCellGraph out;
+  SubvolumeGraph& g = out.graph;
+  g.size.assign(static_cast<std::size_t>(n), 0.0);
+  for (Index f = 0; f < mesh.numFaces(); ++f) {
+    if (mesh.isDeletedFace(f)) throw std::logic_error("dualCellGraph: the mesh has deleted faces (garbageCollect first)");
+    const Tri t = mesh.faceVertices(f);
+    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
+    for (Index v : t) g.size[v] += third;
+  }
+  g.start.clear();
+  g.start.push_back(0);
+  for (Index v = 0; v < n; ++v) {
+    for (Index h : mesh.outgoingHalfedges(v)) {
+      const double cot_sum = cotanOpposite(mesh, h) + cotanOpposite(mesh, mesh.twin(h));
+      if (cot_sum <= 0.0) {  // rate ≤ 0: no edge either way
+        if (cot_sum < 0.0) ++out.clipped_edges;  // counted from both ends
+        continue;
+      }
+      g.target.push_back(mesh.tip(h));
+      g.hop_length2.push_back(2.0 * g.size[v] / cot_sum);
+    }
+    g.start.push_back(static_cast<Index>(g.target.size()));
+  }
+  out.clipped_edges /= 2;
+  return out;
+}
+
+}  // namespace cortex
