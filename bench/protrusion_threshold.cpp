@@ -17,6 +17,7 @@
 #include "io/config.hpp"
 #include "sim/simulation.hpp"
 #include "sim/system.hpp"
+#include "tube_pulling.hpp"
 
 namespace cortex {
 namespace {
@@ -55,66 +56,14 @@ class BundleRecorder final : public RunObserver {
   double after_;
 };
 
-// A 500 nm patch under tension 0.02 pN/nm (f₀ = 12.6 pN, tube radius 50 nm) over N rigid
-// filaments (each one clamped cylinder: actin's hinges buckle under these loads once the
-// filaments are long), 10 nm apart; G-actin held at `concentration` by exchange with a
-// reservoir (c = k_in / 10 s⁻¹) in a 1 µm cube.
+// The tube-pulling scenario (tube_pulling.hpp) on a 500 nm patch under tension
+// 0.02 pN/nm (f₀ = 12.6 pN, tube radius 50 nm) with N filaments, seeded by N.
 std::string config(int filaments, double concentration, double on, double off, double window, double end_time) {
-  return R"(
-[simulation]
-seed = )" + std::to_string(filaments) +
-         "\nend_time = " + std::to_string(end_time) + "\nchemistry_window = " + std::to_string(window) + R"(
-snapshot_interval = 100.0
-
-[compartments]
-size = 250.0
-shape = [4, 4, 4]
-
-[[species]]
-name = "G"
-diffusion = 2.0e7
-concentration = )" + std::to_string(concentration) +
-         R"(
-
-[[reaction]]
-equation = "-> G"
-rate = )" + std::to_string(10.0 * concentration) +
-         R"(
-[[reaction]]
-equation = "G ->"
-rate = 10.0
-
-[[membrane]]
-name = "patch"
-shape = "plane"
-center = [500.0, 500.0, 200.0]
-size = [500.0, 500.0]
-mesh_size = 25.0
-boundary = "fixed"
-bending_modulus = 100.0
-tension = 0.02
-area_model = "none"
-remesh = true
-
-[[filament_type]]
-name = "actin"
-monomer_species = "G"
-cylinder_monomers = 400
-plus_on = )" + std::to_string(on) +
-         "\nplus_off = " + std::to_string(off) + R"(
-minus_on = 0.0
-minus_off = 0.0
-
-[[filaments]]
-count = )" + std::to_string(filaments) +
-         R"(
-length = 108.0
-placement = "bundle"
-center = [500.0, 500.0, 106.0]
-direction = [0.0, 0.0, 1.0]
-spacing = 10.0
-clamped_minus_end = true
-)";
+  bench::TubePulling s;
+  s.seed = static_cast<unsigned>(filaments);
+  s.end_time = end_time, s.window = window, s.patch = 500.0;
+  s.filaments = filaments, s.concentration = concentration, s.on = on, s.off = off;
+  return bench::tubePullingConfig(s);
 }
 
 void BM_ProtrusionThreshold(benchmark::State& state) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/membrane_reference.hpp"
 
 namespace cortex {
 namespace {
@@ -32,14 +33,8 @@ SpeciesSide readSide(const ConfigReader& r, const std::vector<MembraneConfig>& m
   for (const char* k : {"inside", "outside"}) {
     if (!r.has(k)) continue;
     if (!side.membrane.empty()) r.fail(k, "give either inside or outside, not both");
-    side.membrane = r.string(k, "");
+    side.membrane = readClosedMembraneName(r, k, membranes);
     side.outside = std::string(k) == "outside";
-    const MembraneConfig* m = nullptr;
-    for (const MembraneConfig& mc : membranes)
-      if (mc.name == side.membrane) m = &mc;
-    if (!m) r.fail(k, fmt::format("no membrane is named \"{}\"", side.membrane));
-    // Loaded meshes are checked once read (sim/confinement.cpp).
-    if (m->shape == "plane") r.fail(k, fmt::format("membrane \"{}\" is open and confines nothing", side.membrane));
   }
   return side;
 }

@@ -215,7 +215,7 @@ Config parseConfig(const std::string& text, const std::string& source,
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
   }
   c.chemistry = readChemistry(r, c.membranes);
-  c.filaments = readFilaments(r, c.chemistry);
+  c.filaments = readFilaments(r, c.chemistry, c.membranes);
   c.membrane_filament = readMembraneFilament(r, c);
   if (c.membranes.empty() && !c.chemistry && !c.filaments)
     throw InputError(fmt::format("{}: no [[membrane]], [[species]] or [[filament_type]] given: nothing to simulate",

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/membrane_reference.hpp"
 
 namespace cortex {
 namespace {
@@ -106,7 +107,8 @@ Space spaceOf(const std::optional<BoundaryConfig>& b, const Vec3& grid_max) {
   return {(b->min + b->max) / 2, (b->max - b->min).norm(), "boundary box's diagonal"};
 }
 
-FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& types, const Space& space) {
+FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& types, const Space& space,
+                      const std::vector<MembraneConfig>& membranes) {
   FilamentInit f;
   f.type_index = typeIndex(r, "type", types, f.type);
   const FilamentType& t = types[f.type_index];
@@ -140,7 +142,7 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
       if (!(lo.array() < hi.array()).all()) r.fail("region", "min must be below max on every axis");
       f.region = std::array<Vec3, 2>{lo, hi};
     }
-    f.inside = r.string("inside", "");  // a membrane's name, checked when the System is built
+    if (r.has("inside")) f.inside = readClosedMembraneName(r, "inside", membranes);
   }
   r.finish();
   return f;
@@ -247,7 +249,8 @@ class ProteinNames {
 
 }  // namespace
 
-std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry) {
+std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry,
+                                            const std::vector<MembraneConfig>& membranes) {
   const auto type_tables = root.tableArray("filament_type");
   if (type_tables.empty()) {
     for (const char* k : {"filaments", "boundary", "linker", "motor", "brancher"})
@@ -282,7 +285,7 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
                           grid_max.x(), grid_max.y(), grid_max.z()));
   }
   const Space space = spaceOf(f.boundary, grid_max);
-  for (const ConfigReader& r : root.tableArray("filaments")) f.initial.push_back(readInit(r, f.types, space));
+  for (const ConfigReader& r : root.tableArray("filaments")) f.initial.push_back(readInit(r, f.types, space, membranes));
 
   ProteinNames names(f.types);
   const auto linkers = root.tableArray("linker");

@@ -12,7 +12,9 @@ namespace cortex {
 
 // Empty when the config has no [[filament_type]] (then the other filament tables are
 // errors: they would be ignored). Species names resolve against chemistry's
-// [[species]]; the boundary box defaults to the compartment grid's box.
-std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry);
+// [[species]]; the boundary box defaults to the compartment grid's box; `membranes`
+// resolves the inside key of [[filaments]].
+std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry,
+                                            const std::vector<MembraneConfig>& membranes);
 
 }  // namespace cortex

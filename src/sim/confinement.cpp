@@ -6,6 +6,7 @@
 
 #include "chem/compartment_slicing.hpp"
 #include "core/error.hpp"
+#include "sim/membrane_builder.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -20,14 +21,9 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
     if (side.membrane.empty()) continue;
     auto it = slices.find(side.membrane);
     if (it == slices.end()) {
-      const Membrane* m = nullptr;
-      for (const auto& candidate : membranes)
-        if (candidate->name() == side.membrane) m = candidate.get();
-      const char* key = side.outside ? "outside" : "inside";
-      if (!m) throw InputError(fmt::format("[[species]] {}: no membrane is named \"{}\"", key, side.membrane));
-      if (!m->isClosed())
-        throw InputError(fmt::format("[[species]] {}: membrane \"{}\" is open and confines nothing", key, side.membrane));
-      it = slices.emplace(side.membrane, sliceCompartments(m->mesh().positions(), m->mesh().triangles(), grid)).first;
+      const Membrane& m = closedMembrane(membranes, side.membrane,
+                                         fmt::format("[[species]] {}", side.outside ? "outside" : "inside"));
+      it = slices.emplace(side.membrane, sliceCompartments(m.mesh().positions(), m.mesh().triangles(), grid)).first;
     }
     const CompartmentSlices& cut = it->second;
     SideFractions f{cut.volume, cut.faces};

@@ -2,13 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "interact/inside_membrane.hpp"
+#include "sim/membrane_builder.hpp"
 
 namespace cortex {
 namespace {
@@ -86,22 +86,17 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
 }
 
 std::vector<std::optional<PlacementRegion>> placementRegions(const FilamentConfig& config,
-                                                             const std::vector<const Membrane*>& membranes,
+                                                             const std::vector<std::unique_ptr<Membrane>>& membranes,
                                                              double margin) {
   std::vector<std::optional<PlacementRegion>> regions(config.initial.size());
   for (std::size_t i = 0; i < config.initial.size(); ++i) {
     const std::string& name = config.initial[i].inside;
     if (name.empty()) continue;
-    const auto it = std::find_if(membranes.begin(), membranes.end(), [&](const Membrane* m) { return m->name() == name; });
-    if (it == membranes.end()) throw InputError(fmt::format("filaments.{}.inside: no membrane is named \"{}\"", i, name));
-    const Membrane& m = **it;
-    if (!m.isClosed())
-      throw InputError(fmt::format("filaments.{}.inside: membrane \"{}\" is open and has no inside", i, name));
+    const SurfaceMesh& mesh = closedMembrane(membranes, name, fmt::format("filaments.{}.inside", i)).mesh();
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Vec3& x : m.mesh().positions()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-    const SurfaceMesh* mesh = &m.mesh();
-    regions[i] = PlacementRegion{lo, hi, [mesh, margin](const Vec3& a, const Vec3& b) {
-                                   return segmentInside(*mesh, a, b, margin);
+    for (const Vec3& x : mesh.positions()) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    regions[i] = PlacementRegion{lo, hi, [&mesh, margin](const Vec3& a, const Vec3& b) {
+                                   return segmentInside(mesh, a, b, margin);
                                  }};
   }
   return regions;

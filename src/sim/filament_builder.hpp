@@ -22,10 +22,11 @@ std::unique_ptr<FilamentNetwork> buildFilamentNetwork(const FilamentConfig& conf
                                                       const std::vector<std::optional<PlacementRegion>>& regions = {});
 
 // For each [[filaments]] entry with `inside`: the named closed membrane's bounding box and
-// the test that a filament lies inside it, every point at least `margin` nm from it.
-// InputError when no membrane has that name or it is open.
+// the test that a filament lies inside it, every point at least `margin` nm from it
+// (which holds on to the membrane). InputError when no membrane has that name or it is
+// open.
 std::vector<std::optional<PlacementRegion>> placementRegions(const FilamentConfig& config,
-                                                             const std::vector<const Membrane*>& membranes,
+                                                             const std::vector<std::unique_ptr<Membrane>>& membranes,
                                                              double margin);
 
 // The state a checkpoint stores.

@@ -96,4 +96,14 @@ MembraneState membraneState(const Membrane& m) {
   return s;
 }
 
+const Membrane& closedMembrane(const std::vector<std::unique_ptr<Membrane>>& membranes, const std::string& name,
+                               const std::string& key) {
+  for (const auto& m : membranes) {
+    if (m->name() != name) continue;
+    if (!m->isClosed()) throw InputError(fmt::format("{}: membrane \"{}\" is open and encloses nothing", key, name));
+    return *m;
+  }
+  throw InputError(fmt::format("{}: no membrane is named \"{}\"", key, name));
+}
+
 }  // namespace cortex

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "sim/run_config.hpp"
 #include "sim/system_state.hpp"
@@ -17,5 +19,10 @@ TriangleSoup initialMesh(const MembraneConfig& config);
 
 // The state a checkpoint stores.
 MembraneState membraneState(const Membrane& membrane);
+
+// The membrane a key such as a species' `inside` names, which must be closed (the config
+// reader refused planes; a loaded mesh may still be open). InputError "KEY: ..." else.
+const Membrane& closedMembrane(const std::vector<std::unique_ptr<Membrane>>& membranes, const std::string& name,
+                               const std::string& key);
 
 }  // namespace cortex

@@ -32,13 +32,11 @@ System::System(const Config& config, const SystemState* restored) {
   if (config.filaments) {
     if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
     try {
-      std::vector<const Membrane*> membranes;
-      for (const auto& m : membranes_) membranes.push_back(m.get());
       // Filaments placed inside a membrane start clear of its interaction's cut-off.
       const double margin = (config.membrane_filament ? *config.membrane_filament : MembraneBeadExclusionParams{}).cutoff;
       filaments_ = buildFilamentNetwork(*config.filaments, Vec3::Zero(), grid_.extent(), seed,
                                         restored ? &*restored->filaments : nullptr,
-                                        placementRegions(*config.filaments, membranes, margin));
+                                        placementRegions(*config.filaments, membranes_, margin));
     } catch (const InputError& e) {
       // Placement names the [[filaments]] table; say which file it is in.
       if (restored) throw;

@@ -85,15 +85,14 @@ SweptValue sweptValue(const toml::node& node, const std::string& key, const Swee
     v.text = s->get();
   } else if (const auto* list = node.as_array()) {
     // A vector such as a direction: passed on as written, recorded as its TOML text.
+    if (list->empty()) fail(&node, key, "an array value needs at least one number");
     v.toml = "[";
     for (const toml::node& item : *list) {
       if (!item.is_integer() && !item.is_floating_point())
         fail(&item, key, "an array value holds numbers only, e.g. [0.5, 0.0, 0.866]");
-      v.toml += (v.toml.size() > 1 ? ", " : "") + (item.is_integer() ? fmt::format("{}", item.as_integer()->get())
-                                                                        : tomlFloat(item.as_floating_point()->get()));
+      v.toml += (v.toml.size() > 1 ? ", " : "") + sweptValue(item, key, fail).toml;
     }
     v.toml += "]";
-    if (list->empty()) fail(&node, key, "an array value needs at least one number");
     v.text = v.toml;
   } else {
     fail(&node, key, "must be a number, a boolean, a string or an array of numbers");

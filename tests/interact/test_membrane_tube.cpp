@@ -11,71 +11,19 @@
 #include "io/config.hpp"
 #include "sim/simulation.hpp"
 #include "sim/system.hpp"
+#include "tube_pulling.hpp"
 
 namespace cortex {
 namespace {
 
-// Four filaments, each one clamped cylinder (rigid rods: actin's hinges buckle under the
-// ~3 pN each carries once the filaments are a few hundred nanometres long, and the bundle
-// slips off the tube), 10 nm apart, tips 40 nm under a 1 µm patch at z = 200 nm. Fast
-// ends (10× actin's rates) at 6 µM: stall force 7.3 pN per filament, 29 pN for the bundle,
-// above the peak force (≈ 1.15 f₀) the tube has to pass.
+// Four rigid filaments under a 1 µm patch (bench/tube_pulling.hpp), fast ends (10×
+// actin's rates) at 6 µM: stall force 7.3 pN per filament, 29 pN for the bundle, above
+// the peak force (≈ 1.15 f₀) the tube has to pass.
 std::string tubeConfig(double tension, double end_time) {
-  return R"(
-[simulation]
-seed = 1
-end_time = )" + std::to_string(end_time) +
-         R"(
-chemistry_window = 0.01
-snapshot_interval = 100.0
-
-[compartments]
-size = 250.0
-shape = [4, 4, 4]
-
-[[species]]
-name = "G"
-diffusion = 2.0e7
-concentration = 6.0
-
-[[reaction]]
-equation = "-> G"
-rate = 60.0
-[[reaction]]
-equation = "G ->"
-rate = 10.0
-
-[[membrane]]
-name = "patch"
-shape = "plane"
-center = [500.0, 500.0, 200.0]
-size = [1000.0, 1000.0]
-mesh_size = 25.0
-boundary = "fixed"
-bending_modulus = 100.0
-tension = )" + std::to_string(tension) +
-         R"(
-area_model = "none"
-remesh = true
-
-[[filament_type]]
-name = "actin"
-monomer_species = "G"
-cylinder_monomers = 400
-plus_on = 116.0
-plus_off = 5.8
-minus_on = 0.0
-minus_off = 0.0
-
-[[filaments]]
-count = 4
-length = 108.0
-placement = "bundle"
-center = [500.0, 500.0, 106.0]
-direction = [0.0, 0.0, 1.0]
-spacing = 10.0
-clamped_minus_end = true
-)";
+  bench::TubePulling s;
+  s.tension = tension;
+  s.end_time = end_time;
+  return bench::tubePullingConfig(s);
 }
 
 TEST(MembraneTube, ABundlePullsATubeOfRadiusSqrtKappaOver2GammaAtForce2PiSqrt2KappaGamma) {
