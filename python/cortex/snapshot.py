@@ -31,14 +31,26 @@ FILAMENT_DATASETS = {
 class Membrane:
     """A triangle mesh: vertices (n,3) nm, triangles (m,3) vertex indices,
     mean_curvature (n) 1/nm or None when the file has none, contact_force (n,3) pN (the
-    filaments' push on each vertex) or None in runs without membrane–filament contact."""
+    filaments' push on each vertex) or None in runs without membrane–filament contact,
+    species: copies (n) per vertex by name of each membrane species (empty without)."""
 
-    def __init__(self, name, vertices, triangles, mean_curvature, contact_force=None):
+    def __init__(self, name, vertices, triangles, mean_curvature, contact_force=None, species=None):
         self.name = name
         self.vertices = vertices
         self.triangles = triangles
         self.mean_curvature = mean_curvature
         self.contact_force = contact_force
+        self.species = species or {}
+
+    def cell_areas(self):
+        """Dual-cell area |C_j| (nm^2) of every vertex: a third of the triangles around it,
+        the area a vertex's copies stand for (density = copies / area)."""
+        v, t = self.vertices, self.triangles
+        area = 0.5 * np.linalg.norm(np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]]), axis=1)
+        out = np.zeros(len(v))
+        for k in range(3):
+            np.add.at(out, t[:, k], area / 3.0)
+        return out
 
     def __repr__(self):
         return f"<Membrane {self.name!r}: {len(self.vertices)} vertices, {len(self.triangles)} triangles>"
@@ -106,8 +118,10 @@ class Snapshot:
         for name, m in sorted(g["membranes"].items()):
             h = np.asarray(m["mean_curvature"][()], dtype=float) if "mean_curvature" in m else None
             f = np.asarray(m["contact_force"][()], dtype=float) if "contact_force" in m else None
+            species = ({k: np.asarray(d[()], dtype=np.int64) for k, d in m["species"].items()}
+                       if "species" in m else {})
             out[name] = Membrane(name, np.asarray(m["vertices"][()], dtype=float),
-                                 np.asarray(m["triangles"][()], dtype=np.int64), h, f)
+                                 np.asarray(m["triangles"][()], dtype=np.int64), h, f, species)
         return out
 
     @cached_property

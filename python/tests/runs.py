@@ -186,7 +186,43 @@ direction = [0.0, 0.0, 1.0]
 fixed_minus_end = true
 """
 
-CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE}
+# Membrane proteins starting left of a 1 k_BT Gaussian barrier on a 600 nm patch
+# (examples/membrane_barrier.toml, small and short): 6 snapshots as copies cross it.
+BARRIER = """
+[simulation]
+seed = 4
+end_time = 0.05
+chemistry_window = 0.01
+snapshot_interval = 0.01
+
+[[membrane]]
+name = "patch"
+shape = "plane"
+center = [300.0, 300.0, 0.0]
+size = [600.0, 600.0]
+mesh_size = 50.0
+boundary = "fixed"
+bending_modulus = 100.0
+area_model = "none"
+
+[[membrane.species]]
+name = "M"
+diffusion = 1.0e6
+copies = 2000
+region = { min = [-1.0, -1.0, -1.0], max = [200.0, 601.0, 1.0] }
+
+[membrane.species.potential]
+type = "gaussian_stripe"
+center = 300.0
+width = 80.0
+height = 1.0
+
+[compartments]
+size = 700.0
+"""
+
+CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE,
+           "barrier": BARRIER}
 
 
 def root():

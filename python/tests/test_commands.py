@@ -14,7 +14,7 @@ from tests.helpers import REPOSITORY, assert_png, command, python
 class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle")}
+        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle", "barrier")}
         cls.tmp = tempfile.TemporaryDirectory()
 
     @classmethod
@@ -57,6 +57,25 @@ class CommandsTest(unittest.TestCase):
         self.assertEqual(lines[0], "run,time_s,rg_nm,rg_rel,filaments,beads,linkers,motors,branch_points")
         self.assertEqual(len(lines), 1 + 2 * len(cortex.open(f)))
         self.assertIn("Rg", self.ok("rg", f, "--type", "0", "--per-length", "--quiet"))
+
+    def test_barrier(self):
+        b = self.runs["barrier"]
+        stdout = self.ok("barrier", b, b, "--labels", "a,b", "--csv", self.out("b.csv"), "-o", self.out("b.png"))
+        assert_png(self, self.out("b.png"))
+        self.assertIn("a: fraction", stdout)
+        with open(self.out("b.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,time_s,fraction,right,total")
+        self.assertEqual(len(lines), 1 + 2 * len(cortex.open(b)))
+        # All 2000 copies start left of x = 200 nm: none past the barrier's centre at first,
+        # a growing share later, and none lost on the way.
+        rows = [[float(v) for v in line.split(",")[1:]] for line in lines[1:1 + len(cortex.open(b))]]
+        self.assertEqual(rows[0][1], 0.0)
+        self.assertGreater(rows[-1][1], 0.1)
+        self.assertTrue(all(row[3] == 2000 for row in rows))
+        code, _, stderr = command("barrier", b, "--species", "X")
+        self.assertEqual(code, 2)
+        self.assertIn("no species 'X'", stderr)
 
     def test_protrusion(self):
         b = self.runs["bundle"]

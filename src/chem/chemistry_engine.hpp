@@ -120,6 +120,14 @@ class ChemistryEngine {
   virtual void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
                           const std::vector<int>& copies) = 0;
 
+  // Multiplies the per-copy hop rates of surface species `species` along the directed
+  // edges of its surface's current graph (the one setSurface gave, in its edge order) by
+  // `factors`: the drift of a potential (docs/proteins.md). The caller keeps detailed
+  // balance (factor_ij / factor_ji = e^{-β(h_j - h_i)} for stationary copies ∝ size ·
+  // e^{-βh}). setSurface resets the factors to 1. Throws std::invalid_argument for a 3D
+  // species, a factor negative or not finite, or a count other than the graph's edges.
+  virtual void setSurfaceDrift(Index species, const std::vector<double>& factors) = 0;
+
   // The total propensity (events/s) at the current copies and rates, and the channel
   // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"").
   struct Load {

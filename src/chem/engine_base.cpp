@@ -26,7 +26,8 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       weighted_(S_, 0),
       hop_rate_(S_, 0.0),
       confined_(S_, 0),
-      scale_species_(R_, -1) {
+      scale_species_(R_, -1),
+      drift_(S_) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
   graphs_[0] = model.volumes;
   const Index n0 = model.volumes.count();
@@ -114,7 +115,7 @@ void EngineBase::computeHopRates() {
   bool any_weighted = false;
   for (Index s = 0; s < S_; ++s) {
     const Index k = net_.speciesRegion[s];
-    weighted_[s] = confined_[s] || !uniform[k];
+    weighted_[s] = confined_[s] || !uniform[k] || !drift_[s].empty();
     any_weighted = any_weighted || weighted_[s];
     const auto& l2 = graphs_[k].hop_length2;
     hop_rate_[s] = l2.empty() ? 0.0 : species_[s].diffusion / l2.front();
@@ -127,10 +128,12 @@ void EngineBase::computeHopRates() {
   for (Index s = 0; s < S_; ++s) {
     if (!weighted_[s]) continue;
     const Index k = net_.speciesRegion[s];
+    const Index first_edge = edge_start_[region_start_[k]];
     for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) {
       double total = 0.0;
       for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e) {
         double rate = species_[s].diffusion / hop_length2_[e];
+        if (!drift_[s].empty()) rate *= drift_[s][e - first_edge];
         if (confined_[s]) {
           const double f = volume_[static_cast<std::size_t>(i) * S_ + s];
           const bool open = f > 0.0 && volume_[static_cast<std::size_t>(edge_target_[e]) * S_ + s] > 0.0;
@@ -304,8 +307,24 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
                                   " on surface " + std::to_string(surface));
   graphs_[region] = graph;
   holders_[region] = holders;
+  for (Index s = 0; s < S_; ++s)
+    if (net_.speciesRegion[s] == region) drift_[s].clear();
   layOut(region, copies);
   relaidOut();
+}
+
+void EngineBase::setSurfaceDrift(Index species, const std::vector<double>& factors) {
+  if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
+  const Index region = net_.speciesRegion[species];
+  if (region == 0) throw std::invalid_argument("chemistry engine: only surface species drift");
+  if (factors.size() != static_cast<std::size_t>(graphs_[region].numEdges()))
+    throw std::invalid_argument("chemistry engine: setSurfaceDrift needs one factor per edge of the surface");
+  for (double f : factors)
+    if (!(f >= 0.0 && std::isfinite(f)))
+      throw std::invalid_argument("chemistry engine: a drift factor negative or not finite");
+  drift_[species] = factors;
+  computeHopRates();
+  for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
 }
 
 void EngineBase::setConfinement(Index species, const std::vector<double>& volume, const std::vector<double>& edges) {

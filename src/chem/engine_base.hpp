@@ -31,6 +31,7 @@ class EngineBase : public ChemistryEngine {
   void setConfinement(Index species, const std::vector<double>& volume, const std::vector<double>& edges) override;
   void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
                   const std::vector<int>& copies) override;
+  void setSurfaceDrift(Index species, const std::vector<double>& factors) override;
 
  protected:
   // Throws InputError for an invalid model or negative copies, std::invalid_argument
@@ -148,6 +149,9 @@ class EngineBase : public ChemistryEngine {
   // Confinement inputs per species ([i * S + s] over the 3D subvolumes; 1 when unconfined)
   // and per 3D edge ([e * S + s]), allocated at the first setConfinement.
   std::vector<double> volume_, edge_fraction_;
+  // Per species: hop-rate factors along its surface's edges (region-local edge order),
+  // empty for none (setSurfaceDrift).
+  std::vector<std::vector<double>> drift_;
 };
 
 }  // namespace cortex

@@ -21,6 +21,7 @@ enum class StreamId : std::uint64_t {
   kChemistry = 1,
   kInitialConditions = 2,
   kFilamentPlacement = 3,
+  kSurfaceSpeciesPlacement = 4,
 };
 
 class RandomStream {

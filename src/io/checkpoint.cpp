@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/filament_checkpoint.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/observables.hpp"
 
 namespace cortex {
 namespace {
@@ -98,6 +99,9 @@ void writeMembrane(h5::File& f, const std::string& g, const MembraneState& s) {
   }
   const RemeshStats& r = s.remesh_totals;
   f.write(g + "/remesh_totals", std::vector<std::int64_t>{r.sweeps, r.splits, r.collapses, r.flips, r.relocations});
+  for (std::size_t k = 0; k < s.species.size(); ++k)
+    f.write(g + "/species/" + s.species[k], std::vector<std::int32_t>(s.species_copies[k].begin(), s.species_copies[k].end()));
+  if (!s.species.empty()) f.setAttribute(g + "/species", "order", joinColumns(s.species));
 }
 
 MembraneState readMembrane(const h5::File& f, const std::string& g, const std::string& file_name) {
@@ -122,6 +126,16 @@ MembraneState readMembrane(const h5::File& f, const std::string& g, const std::s
   const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");
   if (r.size() != 5) throw InputError(fmt::format("{}: {}/remesh_totals is malformed", file_name, g));
   s.remesh_totals = {r[1], r[2], r[3], r[4], r[0]};
+  if (f.exists(g + "/species")) {
+    s.species = f.attributeExists(g + "/species", "order") ? splitColumns(f.attributeString(g + "/species", "order"))
+                                                           : f.children(g + "/species");
+    for (const std::string& name : s.species) {
+      const std::vector<std::int32_t> c = f.readInt32(g + "/species/" + name);
+      if (c.size() != s.mesh.positions.size())
+        throw InputError(fmt::format("{}: {}/species/{} does not match the vertex count", file_name, g, name));
+      s.species_copies.emplace_back(c.begin(), c.end());
+    }
+  }
   return s;
 }
 

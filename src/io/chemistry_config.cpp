@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/box_region_config.hpp"
 #include "io/membrane_reference.hpp"
 
 namespace cortex {
@@ -70,24 +71,42 @@ SpeciesConfig readSpecies(const ConfigReader& r, double box_volume_nm3, const st
 }
 
 std::optional<BoxRegion> readRegion(const ConfigReader& reaction, const CompartmentGrid& grid) {
-  const std::optional<ConfigReader> r = reaction.table("region");
-  if (!r) return std::nullopt;
-  const auto lo = r->numbers("min", 3, Range{}, "nm"), hi = r->numbers("max", 3, Range{}, "nm");
-  r->finish();
-  BoxRegion box{Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])};
-  if (!(box.min.array() < box.max.array()).all()) reaction.fail("region", "min must be below max on every axis");
+  const std::optional<BoxRegion> box = readBoxRegion(reaction, "region");
+  if (!box) return box;
   for (Index c = 0; c < grid.count(); ++c)
-    if (box.contains(grid.centre(c))) return box;
+    if (box->contains(grid.centre(c))) return box;
   reaction.fail("region", "contains no compartment centre: the reaction could never fire");
+}
+
+// The species of every [[membrane.species]], after the 3D ones: surface k is the k-th
+// membrane that has species.
+void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
+  for (const MembraneConfig& m : membranes) {
+    if (m.species.empty()) continue;
+    const auto surface = static_cast<Index>(c.surfaces.size());
+    c.surfaces.push_back(m.name);
+    for (const SurfaceSpeciesConfig& s : m.species) {
+      for (const SpeciesDef& other : c.species)
+        if (other.name == s.name)
+          root.fail("membrane", fmt::format("species \"{}\" of membrane \"{}\" has the name of another species; "
+                                            "species names must be unique across [[species]] and every membrane",
+                                            s.name, m.name));
+      c.species.push_back(SpeciesDef{s.name, s.diffusion, surface});
+      c.initial_copies.push_back(0);
+      c.sides.emplace_back();
+    }
+  }
 }
 
 }  // namespace
 
 std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
   const auto species = root.tableArray("species");
-  if (species.empty()) {
+  bool surface_species = false;
+  for (const MembraneConfig& m : membranes) surface_species = surface_species || !m.species.empty();
+  if (species.empty() && !surface_species) {
     for (const char* k : {"reaction", "compartments", "chemistry"})
-      if (root.has(k)) root.fail(k, "has no effect without [[species]]");
+      if (root.has(k)) root.fail(k, "has no effect without [[species]] or [[membrane.species]]");
     return std::nullopt;
   }
   ChemistryConfig c;
@@ -107,6 +126,7 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
     c.initial_copies.push_back(s.copies);
     c.sides.push_back(s.side);
   }
+  addSurfaceSpecies(c, root, membranes);
   for (const ConfigReader& r : root.tableArray("reaction")) {
     const std::string equation = r.string("equation", "");
     const double rate = r.requiredNumber("rate", Range::nonNegative(), "(1/s, 1/(µM s) or µM/s by order)");
@@ -117,11 +137,24 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
       r.fail("equation", e.what());
     }
     // Confinement scales a propensity by one volume fraction, so a reaction cannot mix
-    // species confined to different sides.
+    // 3D species confined to different sides. A reaction with surface species fires on
+    // their membrane, and its 3D species react with the compartment holding each vertex.
     const ReactionDef& def = c.reactions.back();
     std::vector<Index> involved;
-    for (const auto& x : def.reactants) involved.push_back(x.species);
-    for (const auto& x : def.products) involved.push_back(x.species);
+    Index surface = -1;
+    for (const auto* list : {&def.reactants, &def.products})
+      for (const Stoichiometry& x : *list) {
+        const Index on = c.species[x.species].surface;
+        if (on < 0) involved.push_back(x.species);
+        if (on >= 0 && surface >= 0 && on != surface)
+          r.fail("equation", fmt::format("its species live on different membranes (\"{}\" and \"{}\")",
+                                         c.surfaces[surface], c.surfaces[on]));
+        if (on >= 0) surface = on;
+      }
+    const bool on_surface = surface >= 0;
+    if (on_surface && restriction.restricted())
+      r.fail(restriction.region ? "region" : restriction.side.outside ? "outside" : "inside",
+             "a reaction of membrane species fires on its membrane; it takes no region or side");
     for (Index sp : involved)
       if (!(c.sides[sp] == c.sides[involved.front()]))
         r.fail("equation", fmt::format("species \"{}\" and \"{}\" are confined to different sides of membranes; "

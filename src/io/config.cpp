@@ -10,6 +10,7 @@
 #include "io/config_override.hpp"
 #include "io/config_reader.hpp"
 #include "io/filament_config.hpp"
+#include "io/surface_species_config.hpp"
 
 namespace cortex {
 namespace {
@@ -162,7 +163,7 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
     r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
   if (m.mesh_size > 0 && m.max_size < m.mesh_size)
     r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
-  if (r.has("species")) r.fail("species", "membrane species are not supported yet in this version");
+  m.species = readSurfaceSpecies(r);
   r.finish();
   return m;
 }

@@ -21,8 +21,12 @@ Vec3 readVec(const ConfigReader& r, const std::string& key, const char* unit) {
 Index speciesIndex(const ConfigReader& r, const std::string& key, const std::vector<SpeciesDef>& species) {
   if (!r.has(key)) r.fail(key, "is required (the name of a [[species]])");
   const std::string name = r.string(key, "");
-  for (std::size_t i = 0; i < species.size(); ++i)
-    if (species[i].name == name) return static_cast<Index>(i);
+  for (std::size_t i = 0; i < species.size(); ++i) {
+    if (species[i].name != name) continue;
+    if (species[i].surface >= 0)
+      r.fail(key, fmt::format("\"{}\" is a membrane species; filaments exchange with [[species]] in 3D", name));
+    return static_cast<Index>(i);
+  }
   r.fail(key, species.empty() ? fmt::format("names \"{}\" but the config has no [[species]]", name)
                               : fmt::format("no [[species]] is named \"{}\"", name));
 }

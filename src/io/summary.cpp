@@ -19,7 +19,8 @@ nlohmann::json chemistrySummary(const System& system) {
   json species = json::object();
   for (Index s = 0; s < static_cast<Index>(model.species.size()); ++s) {
     std::int64_t total = 0;
-    for (Index c = 0; c < system.grid().count(); ++c) total += chem->copies(c, s);
+    // Over every subvolume: compartments, and the vertices of membranes with species.
+    for (Index c = 0; c < chem->numSubvolumes(); ++c) total += chem->copies(c, s);
     species[model.species[s].name] = total;
   }
   json reactions = json::array();
@@ -29,7 +30,9 @@ nlohmann::json chemistrySummary(const System& system) {
           {"diffusion_events", chem->diffusionEvents()},
           {"reactions", reactions},
           {"compartments", system.grid().count()},
-          {"species", species}};
+          {"species", species},
+          {"surface_edges_closed", {{"cotangent", system.closedSurfaceEdges()[0]},
+                                    {"linear_drift", system.closedSurfaceEdges()[1]}}}};
 }
 
 // Bound proteins per type name (every configured type listed, 0 when none is bound).

@@ -89,7 +89,12 @@ XdmfSnapshot describe(const h5::File& file, std::int64_t index) {
     const auto rows = [&](const char* dataset) {
       return static_cast<std::int64_t>(file.shape(path + dataset).at(0));
     };
-    snapshot.membranes.push_back({name, rows("/vertices"), rows("/triangles"), file.exists(path + "/contact_force")});
+    std::vector<std::string> species;
+    if (file.exists(path + "/species"))
+      species = file.attributeExists(path + "/species", "order") ? splitNames(file, path + "/species", "order")
+                                                                 : file.children(path + "/species");
+    snapshot.membranes.push_back(
+        {name, rows("/vertices"), rows("/triangles"), file.exists(path + "/contact_force"), species});
   }
   return snapshot;
 }
@@ -121,7 +126,16 @@ XdmfMembrane writeMembrane(h5::File& file, const std::string& group,
                                  membrane.contact_force.size(), n));
     file.write(path + "/contact_force", membrane.contact_force, {n, 3});
   }
-  return {name, static_cast<std::int64_t>(n), static_cast<std::int64_t>(m), forces};
+  std::vector<std::string> species;
+  for (const SpeciesField& field : membrane.species) {
+    if (field.copies.size() != n)
+      throw RunError(fmt::format("membrane '{}': {} copies of species '{}' for {} vertices", name, field.copies.size(),
+                                 field.name, n));
+    file.write(path + "/species/" + field.name, field.copies, {n});
+    species.push_back(field.name);
+  }
+  if (!species.empty()) file.setAttribute(path + "/species", "order", joinColumns(species));
+  return {name, static_cast<std::int64_t>(n), static_cast<std::int64_t>(m), forces, species};
 }
 
 // Segment i joins rows 2i and 2i+1 of an (n,2,3) end-position dataset read as (2n,3).

@@ -58,6 +58,14 @@ void appendMembraneGrid(std::string& xml, const XdmfSnapshot& snapshot, const Xd
 )",
                  fmt::arg("m", membrane.triangles), fmt::arg("n", membrane.vertices), fmt::arg("data", data));
   if (membrane.contact_force) appendNodeVector(xml, "contact_force", membrane.vertices, data + "/contact_force");
+  // Copies of each membrane species per vertex (ParaView shows them as point data).
+  for (const std::string& species : membrane.species)
+    fmt::format_to(std::back_inserter(xml),
+                   R"(          <Attribute Name="{name}" AttributeType="Scalar" Center="Node">
+            <DataItem Format="HDF" NumberType="Int" Precision="4" Dimensions="{n}">{data}/species/{name}</DataItem>
+          </Attribute>
+)",
+                   fmt::arg("name", escapeXml(species)), fmt::arg("n", membrane.vertices), fmt::arg("data", data));
   xml += "        </Grid>\n";
 }
 

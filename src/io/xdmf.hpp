@@ -17,6 +17,7 @@ struct XdmfMembrane {
   std::int64_t vertices = 0;
   std::int64_t triangles = 0;
   bool contact_force = false;  // the snapshot has /membranes/NAME/contact_force
+  std::vector<std::string> species;  // /membranes/NAME/species/SPECIES, copies per vertex
 };
 
 // Element counts of a snapshot's filaments group; a grid with no elements is left out.

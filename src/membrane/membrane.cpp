@@ -1,5 +1,7 @@
 #include "membrane/membrane.hpp"
 
+#include <stdexcept>
+
 #include <cmath>
 
 #include "core/constants.hpp"
@@ -69,6 +71,7 @@ MeshGeometry Membrane::currentGeometry() const {
 
 RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   VertexPayload payload{&fixed_, {}, {&material_.vertex_area0}};
+  for (std::vector<int>& c : species_copies_) payload.counts.push_back(&c);
   const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
   // Rebuilt from its triangle list, the half-edge layout is the one a checkpoint restores
   // (edits leave it in edit order), so a resumed run remeshes exactly as this one.
@@ -82,6 +85,18 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   remesh_totals_.relocations += stats.relocations;
   remesh_totals_.sweeps += stats.sweeps;
   return stats;
+}
+
+void Membrane::setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies) {
+  if (names.size() != copies.size()) throw std::invalid_argument("membrane species: one copy array per name");
+  for (const std::vector<int>& c : copies) {
+    if (c.size() != static_cast<std::size_t>(mesh_.numVertices()))
+      throw std::invalid_argument("membrane \"" + name_ + "\": species copies do not match the vertex count");
+    for (int n : c)
+      if (n < 0) throw std::invalid_argument("membrane \"" + name_ + "\": negative species copies");
+  }
+  species_names_ = std::move(names);
+  species_copies_ = std::move(copies);
 }
 
 const MeshGeometry& Membrane::geometry(const Evaluation& e) {

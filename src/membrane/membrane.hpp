@@ -132,6 +132,14 @@ class Membrane final : public Body {
   std::uint64_t connectivityVersion() const { return connectivity_version_; }
   void setRemeshTotals(const RemeshStats& totals) { remesh_totals_ = totals; }
 
+  // Proteins living on the membrane (thesis chapter 3): copies per vertex of each species
+  // (`names`, in the config's order), carried exactly through remeshing. Throws
+  // std::invalid_argument unless there is one non-negative count per vertex.
+  void setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies);
+  const std::vector<std::string>& speciesNames() const { return species_names_; }
+  const std::vector<std::vector<int>>& speciesCopies() const { return species_copies_; }
+  std::vector<int>& speciesCopies(Index species) { return species_copies_[species]; }
+
   // Geometry at the coordinates of `e`, recomputed only when e.version changes.
   const MeshGeometry& geometry(const Evaluation& e);
   // Geometry at the mesh's own positions.
@@ -146,6 +154,8 @@ class Membrane final : public Body {
   std::vector<char> fixed_;
   std::optional<RemeshSettings> remeshing_;
   RemeshStats remesh_totals_;
+  std::vector<std::string> species_names_;
+  std::vector<std::vector<int>> species_copies_;  // [species][vertex]
   MembraneEquilibrium equilibrium_;
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;

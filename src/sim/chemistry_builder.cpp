@@ -13,6 +13,7 @@ namespace cortex {
 ChemistryModel chemistryModel(const ChemistryConfig& config) {
   ChemistryModel model;
   model.volumes = gridGraph(config.grid);
+  model.surfaces = config.surfaces;
   model.species = config.species;
   model.addReactions("config", config.reactions);
   return model;

@@ -38,12 +38,12 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
 }
 
 ConfinementFeedback::ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine,
-                                         const ReactionRange& config_reactions)
+                                         RateFactors config_factors)
     : grid_(config.grid),
       sides_(config.sides),
       restrictions_(config.reaction_restrictions),
       engine_(engine),
-      factors_(engine.claimRateFactors(config_reactions)) {
+      factors_(std::move(config_factors)) {
   active_ = false;
   for (const SpeciesSide& s : sides_) active_ = active_ || !s.membrane.empty();
   for (const ReactionRestriction& r : restrictions_) active_ = active_ || r.restricted();

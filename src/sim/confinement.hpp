@@ -1,7 +1,6 @@
 // Membrane confinement of 3D species (thesis 2.2.4.2): slices the membranes that confine
 // species and hands each species the fractions of its side to the engine, and sets the
-// rate factors of the config's reactions limited to a box or a side of a membrane (it
-// owns those factors). Recomputed from the membranes alone, so a checkpoint needs to
+// rate factors of the config's reactions limited to a box or a side of a membrane. Recomputed from the membranes alone, so a checkpoint needs to
 // store nothing for it.
 #pragma once
 
@@ -29,8 +28,10 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
 
 class ConfinementFeedback final : public Feedback {
  public:
-  // `config_reactions`: the range of the config's reactions in the engine's model.
-  ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine, const ReactionRange& config_reactions);
+  // `config_factors`: the rate factors of the config's reactions, of which this writes
+  // those of restricted (3D) reactions in the compartments; the surface species write
+  // those of unbinding reactions on the vertices (sim/surface_species.hpp).
+  ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine, RateFactors config_factors);
   // Re-slices and applies: after every relaxation (membranes move and are remeshed).
   void update(System& system) override;
 

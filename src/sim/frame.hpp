@@ -10,6 +10,13 @@
 
 namespace cortex {
 
+// Copies of one species: of a 3D species per compartment, laid out as an (nx, ny, nz)
+// C-order array; of a membrane species per vertex.
+struct SpeciesField {
+  std::string name;
+  std::vector<std::int32_t> copies;
+};
+
 struct MembraneFrame {
   std::string name;
   std::vector<double> vertices;        // n*3, row-major (x0,y0,z0,x1,...), nm
@@ -18,6 +25,8 @@ struct MembraneFrame {
   // n*3, pN: the force the filaments put on each vertex (membrane–bead excluded volume);
   // empty in runs where membranes and filaments do not interact.
   std::vector<double> contact_force;
+  // Copies of each membrane species per vertex (n each); empty without species.
+  std::vector<SpeciesField> species;
 };
 
 // The cytoskeleton, flattened. Filament i (its index, an identity for the whole run) owns
@@ -46,11 +55,6 @@ struct FilamentFrame {
   std::vector<std::string> type_names, linker_type_names, motor_type_names;
 };
 
-// Copies of one 3D species per compartment, laid out as an (nx, ny, nz) C-order array.
-struct SpeciesField {
-  std::string name;
-  std::vector<std::int32_t> copies;
-};
 
 // Scalar observables of one snapshot, one named column each (io/observables.hpp).
 struct ObservableRow {

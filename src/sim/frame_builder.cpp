@@ -54,6 +54,8 @@ Frame makeFrame(System& system) {
     for (const Vec3& p : m->mesh().positions()) mf.vertices.insert(mf.vertices.end(), {p.x(), p.y(), p.z()});
     for (const Tri& t : m->topology().triangles) mf.triangles.insert(mf.triangles.end(), t.begin(), t.end());
     mf.mean_curvature = vertexMeanCurvature(m->currentGeometry(), m->topology(), m->mechanics().bending.estimator);
+    for (std::size_t s = 0; s < m->speciesNames().size(); ++s)
+      mf.species.push_back({m->speciesNames()[s], {m->speciesCopies()[s].begin(), m->speciesCopies()[s].end()}});
     frame.membranes.push_back(std::move(mf));
   }
   if (const ChemistryEngine* chem = system.chemistry()) {
@@ -61,6 +63,7 @@ Frame makeFrame(System& system) {
     frame.grid_shape = {g.shape[0], g.shape[1], g.shape[2]};
     frame.grid_spacing = g.size;
     for (Index s = 0; s < static_cast<Index>(system.chemistryModel().species.size()); ++s) {
+      if (system.chemistryModel().species[s].surface >= 0) continue;  // on a membrane's vertices
       SpeciesField field{system.chemistryModel().species[s].name, {}};
       field.copies.reserve(g.count());
       // C order over (x, y, z): z varies fastest, unlike the engine's x-fastest index.

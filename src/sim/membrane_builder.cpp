@@ -78,6 +78,16 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     membrane->setMaterial(restored->material);
     membrane->setRemeshTotals(restored->remesh_totals);
     membrane->setEquilibrium(restored->equilibrium);
+    std::vector<std::string> names;
+    for (const SurfaceSpeciesConfig& sp : c.species) names.push_back(sp.name);
+    if (restored->species != names)
+      throw InputError(fmt::format("checkpoint: membrane \"{}\" has other species than the config's [[membrane.species]]",
+                                   c.name));
+    try {
+      membrane->setSpecies(names, restored->species_copies);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("checkpoint is damaged: {}", e.what()));
+    }
   }
   if (c.remesh)
     membrane->setRemeshing(restored && restored->remeshing ? *restored->remeshing
@@ -93,6 +103,8 @@ MembraneState membraneState(const Membrane& m) {
   s.remesh_totals = m.remeshTotals();
   s.remeshing = m.remeshing();
   s.equilibrium = m.equilibrium();
+  s.species = m.speciesNames();
+  s.species_copies = m.speciesCopies();
   return s;
 }
 

@@ -28,6 +28,48 @@ struct SimulationConfig {
   double temperature = 298.15;      // K
 };
 
+// An axis-aligned box (nm): a reaction with a region fires only in the compartments
+// whose centres lie inside it; a surface species with a region starts on the vertices
+// inside it.
+struct BoxRegion {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  bool contains(const Vec3& x) const { return (x.array() >= min.array()).all() && (x.array() <= max.array()).all(); }
+};
+
+// An external potential acting on a membrane species (thesis 3.2.1: V in h = R + V), in
+// units of k_BT. A Gaussian stripe across `axis`: V = height · exp(−(x_axis − center)² /
+// (2 width²)); a ramp: V = slope · (x_axis − center).
+struct SurfacePotentialConfig {
+  enum class Kind { kGaussianStripe, kRamp } kind = Kind::kGaussianStripe;
+  int axis = 0;           // 0, 1, 2 = x, y, z
+  double center = 0.0;    // nm
+  double width = 1.0;     // nm (stripe: standard deviation)
+  double height = 0.0;    // k_BT (stripe)
+  double slope = 0.0;     // k_BT/nm (ramp)
+};
+
+// How a potential biases the hops along an edge whose ends differ by x = β(h_j − h_i):
+// the exponentially fitted (Scharfetter–Gummel) factor x/(eˣ − 1), exact for the
+// Boltzmann distribution at any x, or the linear 1 − x/2, whose rates turn negative for
+// |x| > 2 (such edges are closed both ways).
+enum class DriftScheme { kExponential, kLinear };
+
+// A protein species living on a membrane's vertices (thesis chapter 3), from
+// [[membrane.species]]: copies per vertex, hopping along the mesh's edges
+// (docs/proteins.md).
+struct SurfaceSpeciesConfig {
+  std::string name;
+  double diffusion = 0.0;  // nm^2/s
+  // The initial copies, spread over the vertices (of `region`, if given) in proportion to
+  // their dual-cell areas: `copies`, or `density` (copies/µm^2) times that area, resolved
+  // when the mesh is built.
+  std::int64_t copies = 0;
+  std::optional<double> density;
+  std::optional<BoxRegion> region;
+  std::optional<SurfacePotentialConfig> potential;
+  DriftScheme drift = DriftScheme::kExponential;
+};
+
 struct MembraneConfig {
   std::string name;
   std::string shape;   // sphere | ellipsoid | plane | mesh
@@ -42,13 +84,7 @@ struct MembraneConfig {
   bool remesh = false;
   double min_size = 0.0, max_size = 0.0;  // nm
   double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)
-};
-
-// An axis-aligned box (nm): a reaction with a region fires only in the compartments
-// whose centres lie inside it.
-struct BoxRegion {
-  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  bool contains(const Vec3& x) const { return (x.array() >= min.array()).all() && (x.array() <= max.array()).all(); }
+  std::vector<SurfaceSpeciesConfig> species;
 };
 
 // Where a reaction may fire: in a box, and/or on one side of a membrane (for reactions
@@ -59,8 +95,9 @@ struct ReactionRestriction {
   bool restricted() const { return region.has_value() || !side.membrane.empty(); }
 };
 
-// The 3D chemistry of the config: its grid, species and reactions (rates in config
-// units), and how each species starts. Modules append their own reactions when the
+// The chemistry of the config: its grid, 3D and surface species and reactions (rates in
+// config units), and how each 3D species starts (surface species start from their
+// membrane's SurfaceSpeciesConfig). Modules append their own reactions when the
 // System is assembled.
 struct ChemistryConfig {
   EngineKind engine = EngineKind::kNextSubvolume;
@@ -71,6 +108,9 @@ struct ChemistryConfig {
   std::vector<std::int64_t> initial_copies;                // per species: in the whole box (or its side)
   std::vector<ReactionRestriction> reaction_restrictions;  // per reaction
   std::vector<SpeciesSide> sides;                          // per species
+  // Membranes with [[membrane.species]], by name: the model's surfaces. Their species
+  // follow the 3D ones in `species` (SpeciesDef::surface set, no initial copies in 3D).
+  std::vector<std::string> surfaces;
 };
 
 struct Config {
@@ -79,7 +119,7 @@ struct Config {
   SimulationConfig simulation;
   MinimizerSettings mechanics;
   std::vector<MembraneConfig> membranes;
-  std::optional<ChemistryConfig> chemistry;  // present when [[species]] are given
+  std::optional<ChemistryConfig> chemistry;  // present when [[species]] or [[membrane.species]] are given
   std::optional<FilamentConfig> filaments;   // present when [[filament_type]] are given
   // Excluded volume between every membrane and the filaments' beads: on whenever both
   // are present, unless [membrane_filament] enabled = false.

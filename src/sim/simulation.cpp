@@ -102,6 +102,7 @@ void Simulation::advanceChemistry(double t_end) {
   if (!chem) return;
   const auto start = std::chrono::steady_clock::now();
   chem->advance(t_end);
+  system_.collectSurfaceCopies();
   system_.counters.chemistry_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -13,6 +13,7 @@
 #include "sim/filament_builder.hpp"
 #include "sim/filament_feedback.hpp"
 #include "sim/membrane_builder.hpp"
+#include "sim/surface_species.hpp"
 
 namespace cortex {
 
@@ -28,6 +29,7 @@ System::System(const Config& config, const SystemState* restored) {
     }
     membranes_.push_back(buildMembrane(mc, config.source, state));
   }
+  if (!restored) placeSurfaceSpecies(config.membranes, membranes_, seed, config.source);
   if (config.chemistry) grid_ = config.chemistry->grid;  // else the default grid bounds the filaments
   if (config.filaments) {
     if (restored && !restored->filaments) throw InputError("checkpoint has no filaments, the config has");
@@ -112,7 +114,16 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
     chemistry_ = makeChemistryEngine(cc.engine, chemistry_model_, initialCopies(cc, seed, weights), seed);
   }
   chemistry_->setEventLimit(cc.max_events_per_window);
-  feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_reactions));
+  // The config's reactions' factors: restricted 3D reactions' in the compartments
+  // (confinement), unbinding reactions' on the vertices (surface species): disjoint.
+  const RateFactors config_factors = chemistry_->claimRateFactors(config_reactions);
+  feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_factors));
+  if (!cc.surfaces.empty()) {
+    auto surfaces = std::make_unique<SurfaceSpeciesFeedback>(cc, config.membranes, *chemistry_, membranes_,
+                                                             config_factors);
+    surface_species_ = surfaces.get();
+    feedback_.push_back(std::move(surfaces));
+  }
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);
     if (!coupling_terms_.empty()) {
@@ -141,6 +152,15 @@ SystemState System::state() const {
 
 void System::updateFeedback() {
   for (auto& f : feedback_) f->update(*this);
+}
+
+void System::collectSurfaceCopies() {
+  if (surface_species_) surface_species_->collect(*this);
+}
+
+std::array<Index, 2> System::closedSurfaceEdges() const {
+  if (!surface_species_) return {0, 0};
+  return {surface_species_->closedEdges().cotangent, surface_species_->closedEdges().drift};
 }
 
 void System::layOut() {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,8 @@
 #include "sim/system_state.hpp"
 
 namespace cortex {
+
+class SurfaceSpeciesFeedback;
 
 class System {
  public:
@@ -64,6 +67,12 @@ class System {
 
   // After a relaxation: confinement and force-dependent rates follow the new positions.
   void updateFeedback();
+  // After a chemistry window: the copies of membrane species go back to the vertices,
+  // where remeshing carries them (sim/surface_species.hpp).
+  void collectSurfaceCopies();
+  // Mesh edges the membrane species' hops left out at the last feedback update, over all
+  // membranes: {negative cotangent sum, closed by a linear drift (summed over species)}.
+  std::array<Index, 2> closedSurfaceEdges() const;
 
   // --- clock --------------------------------------------------------------------------
   // Evaluates every scheduled parameter at time t.
@@ -86,6 +95,7 @@ class System {
   std::unique_ptr<FilamentChemistry> filament_chemistry_;
   std::unique_ptr<ChemistryEngine> chemistry_;
   std::vector<std::unique_ptr<Feedback>> feedback_;  // in the order they run
+  SurfaceSpeciesFeedback* surface_species_ = nullptr;  // one of feedback_, with membrane species
   double time_ = 0.0;
 };
 

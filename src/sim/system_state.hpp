@@ -55,6 +55,9 @@ struct MembraneState {
   // The remesher's settings as resolved at the start (a loaded mesh's defaults come from
   // its original edge lengths, which remeshing changes).
   std::optional<RemeshSettings> remeshing;
+  // Surface species: names and copies per vertex (Membrane::setSpecies).
+  std::vector<std::string> species;
+  std::vector<std::vector<int>> species_copies;
 
   MembraneEquilibrium equilibrium;
 

@@ -118,7 +118,7 @@ TEST_F(TrajectoryWriterTest, XdmfListsEverySnapshotByRelativePath) {
 }
 
 TEST(Xdmf, EscapesNamesAndHandlesNoSnapshots) {
-  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1}}, std::nullopt, std::nullopt}});
+  const std::string xml = trajectoryXdmf({{7, 0.5, {{"a&b", 3, 1, false, {}}}, std::nullopt, std::nullopt}});
   EXPECT_NE(xml.find("Name=\"a&amp;b\""), std::string::npos);
   EXPECT_NE(xml.find(">snapshots/000007.h5:/membranes/a&amp;b/mean_curvature<"), std::string::npos);
   EXPECT_EQ(countOccurrences(trajectoryXdmf({}), "<Grid "), 1u);

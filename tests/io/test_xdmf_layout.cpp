@@ -30,10 +30,10 @@ std::string collection(const std::string& xml, const std::string& name) {
 }
 
 TEST(XdmfLayout, OneCollectionPerObjectWithItsStepsOnly) {
-  const XdmfSnapshot first{0, 0.0, {{"cell", 10, 16}}, XdmfFilaments{4, 3, 0, 0, 0}, std::nullopt};
-  const XdmfSnapshot second{1, 0.5, {{"cell", 12, 20}, {"nucleus", 6, 8}}, XdmfFilaments{6, 4, 2, 0, 1},
+  const XdmfSnapshot first{0, 0.0, {{"cell", 10, 16, false, {}}}, XdmfFilaments{4, 3, 0, 0, 0}, std::nullopt};
+  const XdmfSnapshot second{1, 0.5, {{"cell", 12, 20, false, {}}, {"nucleus", 6, 8, false, {}}}, XdmfFilaments{6, 4, 2, 0, 1},
                             XdmfCompartments{{2, 3, 4}, {"A", "B"}}};
-  const XdmfSnapshot third{2, 1.0, {{"cell", 12, 20}}, XdmfFilaments{6, 4, 0, 0, 1}, XdmfCompartments{{2, 3, 4}, {"A", "B"}}};
+  const XdmfSnapshot third{2, 1.0, {{"cell", 12, 20, false, {}}}, XdmfFilaments{6, 4, 0, 0, 1}, XdmfCompartments{{2, 3, 4}, {"A", "B"}}};
   const std::string xml = trajectoryXdmf({first, second, third});
   // Objects in a fixed order: membranes as they first appear, then the filament parts, then compartments.
   std::size_t last = 0;
@@ -82,8 +82,8 @@ TEST(XdmfLayout, ContactForcesArePointVectorsWhereASnapshotHasThem) {
   // A run where membranes and filaments interact writes contact_force for the membrane
   // and the beads; an older snapshot (a resume across versions) has none, and its grids
   // must not point at datasets that are not there.
-  const XdmfSnapshot without{0, 0.0, {{"cell", 10, 16}}, XdmfFilaments{4, 3, 0, 0, 0}, std::nullopt};
-  const XdmfSnapshot with{1, 0.5, {{"cell", 12, 20, true}}, XdmfFilaments{6, 4, 0, 0, 0, true}, std::nullopt};
+  const XdmfSnapshot without{0, 0.0, {{"cell", 10, 16, false, {}}}, XdmfFilaments{4, 3, 0, 0, 0}, std::nullopt};
+  const XdmfSnapshot with{1, 0.5, {{"cell", 12, 20, true, {}}}, XdmfFilaments{6, 4, 0, 0, 0, true}, std::nullopt};
   const std::string xml = trajectoryXdmf({without, with});
   const std::string cell = collection(xml, "cell");
   EXPECT_EQ(countOccurrences(cell, R"(<Attribute Name="contact_force" AttributeType="Vector" Center="Node">)"), 1u);

@@ -1,7 +1,7 @@
 """The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
 run(args) -> exit code."""
 
-from . import filaments, info, membrane, mesh_resolution, movie, plot, protrusion, rg
+from . import barrier, filaments, info, membrane, mesh_resolution, movie, plot, protrusion, rg
 
 # Command name -> module, in the order `--help` lists them.
 COMMANDS = {
@@ -12,5 +12,6 @@ COMMANDS = {
     "movie": movie,
     "rg": rg,
     "protrusion": protrusion,
+    "barrier": barrier,
     "mesh-resolution": mesh_resolution,
 }

@@ -1,0 +1,118 @@
+"""Membrane proteins crossing a barrier over time (thesis fig. 3.2): per snapshot the
+copies of a membrane species beyond x = SPLIT (default: the membrane's mid-x), as a
+fraction of their equilibrium count there, taken as half of all copies (a barrier
+symmetric about SPLIT; copies on vertices at SPLIT count half). Prints per run a table
+and the time the fraction first reaches 1 - 1/e; -o plots every run on one axis.
+
+  barrier OUT                                       table and crossing time
+  barrier H0 H2 H4 --labels "0 kT,2 kT,4 kT" -o barrier.png
+  barrier OUT --species M --split 750 --csv barrier.csv
+"""
+
+import os
+
+import numpy as np
+
+from .. import plotting
+from ..errors import CortexError
+from . import common
+
+HELP = "membrane species past a barrier over time, as a fraction of equilibrium (table, PNG)"
+
+COLUMNS = ["time_s", "fraction", "right", "total"]
+
+
+def add_arguments(p):
+    common.add_outdirs(p, many=True)
+    common.add_out(p, "PNG to write (no plot without it)")
+    common.add_figure(p, "6,4", 100)
+    common.add_membrane(p)
+    p.add_argument("--species", help="membrane species (default: the membrane's only one)")
+    p.add_argument("--split", type=float, help="x (nm) past which copies count (default: the membrane's mid-x)")
+    p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
+    p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
+    p.add_argument("--title", help="figure title")
+
+
+def species_of(membrane, name, where):
+    if not membrane.species:
+        raise CortexError(f"{where}: membrane '{membrane.name}' has no species")
+    if name is None:
+        if len(membrane.species) > 1:
+            raise CortexError(f"{where}: membrane '{membrane.name}' has species {', '.join(sorted(membrane.species))}; "
+                              "choose one with --species")
+        return next(iter(membrane.species))
+    if name not in membrane.species:
+        raise CortexError(f"{where}: membrane '{membrane.name}' has no species '{name}' "
+                          f"(it has {', '.join(sorted(membrane.species))})")
+    return name
+
+
+def table(outdir, membrane_name, species_name, split):
+    run = common.open_run(outdir)
+    membrane = common.membranes_of(run.snapshot(0), membrane_name)[0]
+    species = species_of(membrane, species_name, run.trajectory_path)
+    x = membrane.vertices[:, 0]
+    if split is None:
+        split = 0.5 * (x.min() + x.max())
+    rows = []
+    for s in run.snapshots():
+        m = s.membranes.get(membrane.name)
+        if m is None:
+            continue
+        copies = m.species[species]
+        tol = 1e-6 * (1.0 + abs(split))
+        weight = np.where(m.vertices[:, 0] > split + tol, 1.0, np.where(m.vertices[:, 0] >= split - tol, 0.5, 0.0))
+        right = float(np.sum(weight * copies))
+        total = float(np.sum(copies))
+        rows.append([s.time, right / (0.5 * total) if total > 0 else np.nan, right, total])
+    return np.array(rows, dtype=float), membrane.name, species, split
+
+
+def crossing_time(rows, level=1.0 - np.exp(-1.0)):
+    """s: the first snapshot time at which the fraction reaches `level` (nan if never)."""
+    reached = np.nonzero(rows[:, 1] >= level)[0]
+    return float(rows[reached[0], 0]) if len(reached) else float("nan")
+
+
+def run(args):
+    labels = (common.split_labels(args.labels, len(args.outdir), "runs") if args.labels
+              else [os.path.basename(os.path.normpath(d)) for d in args.outdir])
+    tables = []
+    for label, outdir in zip(labels, args.outdir):
+        rows, name, species, split = table(outdir, args.membrane, args.species, args.split)
+        tables.append(rows)
+        print(f"# {label}: membrane '{name}', species '{species}', past x = {split:g} nm")
+        print(f"{'t (s)':>8} {'fraction':>9} {'right':>9} {'total':>9}")
+        for t, f, right, total in rows:
+            print(f"{t:8.3f} {f:9.3f} {right:9.0f} {total:9.0f}")
+        t_e = crossing_time(rows)
+        print(f"{label}: fraction {rows[-1, 1]:.3f} at t = {rows[-1, 0]:g} s; reaches 1 - 1/e at "
+              + (f"t = {t_e:g} s" if np.isfinite(t_e) else "no snapshot"))
+    if args.csv:
+        try:
+            with open(args.csv, "w") as fh:
+                fh.write(",".join(["run"] + COLUMNS) + "\n")
+                for label, rows in zip(labels, tables):
+                    for row in rows:
+                        fh.write(",".join([label] + [repr(float(v)) for v in row]) + "\n")
+        except OSError as e:
+            raise CortexError(f"{args.csv}: cannot write ({e.strerror})") from None
+    if args.out:
+        plt = plotting.pyplot()
+        fig, ax = plt.subplots(figsize=args.size)
+        for i, (label, rows) in enumerate(zip(labels, tables)):
+            ax.plot(rows[:, 0], rows[:, 1], "-", color=f"C{i}", label=label)
+        ax.axhline(1.0, color="0.6", lw=0.8, ls="--")
+        ax.set_xlabel("time (s)")
+        ax.set_ylabel("fraction of equilibrium count past the barrier")
+        ax.set_ylim(0.0, 1.1)
+        ax.grid(alpha=0.3)
+        if len(tables) > 1:
+            ax.legend(fontsize=8)
+        if args.title:
+            ax.set_title(args.title)
+        fig.tight_layout()
+        plotting.save(fig, args.out, args.dpi)
+        common.wrote(args.out)
+    return 0

@@ -1,0 +1,57 @@
+#include "io/surface_species_config.hpp"
+
+#include <fmt/format.h>
+
+#include "io/box_region_config.hpp"
+
+namespace cortex {
+namespace {
+
+SurfacePotentialConfig readPotential(const ConfigReader& r) {
+  SurfacePotentialConfig p;
+  const std::string type = r.choice("type", "gaussian_stripe", {"gaussian_stripe", "ramp"});
+  const std::string axis = r.choice("axis", "x", {"x", "y", "z"});
+  p.axis = axis[0] - 'x';
+  p.center = r.number("center", 0.0, Range{}, "nm");
+  if (type == "gaussian_stripe") {
+    p.kind = SurfacePotentialConfig::Kind::kGaussianStripe;
+    p.height = r.requiredNumber("height", Range{-100.0, 100.0}, "k_BT");
+    p.width = r.requiredNumber("width", Range::positive(), "nm");
+  } else {
+    p.kind = SurfacePotentialConfig::Kind::kRamp;
+    p.slope = r.requiredNumber("slope", Range{-10.0, 10.0}, "k_BT/nm");
+  }
+  r.finish();
+  return p;
+}
+
+SurfaceSpeciesConfig readOne(const ConfigReader& r) {
+  SurfaceSpeciesConfig s;
+  if (!r.has("name")) r.fail("name", "is required");
+  s.name = r.name("name", "");
+  s.diffusion = r.number("diffusion", 0.0, Range::nonNegative(), "nm^2/s");
+  if (r.has("copies") && r.has("density")) r.fail("density", "give either copies or density, not both");
+  s.copies = r.integer("copies", 0, 0, 2'000'000'000);
+  if (r.has("density")) s.density = r.requiredNumber("density", Range::nonNegative(), "copies/µm^2");
+  s.region = readBoxRegion(r, "region");
+  if (const auto p = r.table("potential")) s.potential = readPotential(*p);
+  s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear
+                                                                                 : DriftScheme::kExponential;
+  r.finish();
+  return s;
+}
+
+}  // namespace
+
+std::vector<SurfaceSpeciesConfig> readSurfaceSpecies(const ConfigReader& membrane) {
+  std::vector<SurfaceSpeciesConfig> out;
+  for (const ConfigReader& r : membrane.tableArray("species")) {
+    SurfaceSpeciesConfig s = readOne(r);
+    for (const SurfaceSpeciesConfig& other : out)
+      if (other.name == s.name) r.fail("name", fmt::format("\"{}\" is declared twice on this membrane", s.name));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace cortex

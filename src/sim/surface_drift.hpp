@@ -1,0 +1,36 @@
+// Surface diffusion in a potential (thesis 3.2.1–3.2.2, eqs. 3.6–3.11): the potential
+// h_j (k_BT units) at every vertex and the factors that bias the free hop rates
+// D (cot α + cot β)/(2|C_i|) along each edge, so that copies are stationary in
+// proportion to |C_j| e^{−h_j}.
+//
+// Along a directed edge i → j with x = h_j − h_i the free rate is multiplied by
+//   exponential (Scharfetter–Gummel): B(x) = x / (eˣ − 1),
+//   linear:                           1 − x/2  (0 both ways where |x| ≥ 2).
+// B(−x) = eˣ B(x), so the exponential factors satisfy detailed balance exactly at any
+// x; the linear ones are its first-order expansion, in detailed balance to O(x³), and
+// their rates turn negative past |x| = 2; from |x| = 2 on the edge is closed in both directions
+// (the thesis' clipping, done symmetrically so the stationary state stays Boltzmann on
+// the remaining edges). Both lump the drift onto the edge (a two-point flux) rather than
+// use eq. 3.9's full finite-element a_jk; they agree with it to first order in x on a
+// smooth potential (docs/proteins.md).
+#pragma once
+
+#include <vector>
+
+#include "chem/subvolume_graph.hpp"
+#include "sim/run_config.hpp"
+
+namespace cortex {
+
+// The potential (k_BT) at a point.
+double surfacePotential(const SurfacePotentialConfig& potential, const Vec3& x);
+
+struct DriftFactors {
+  std::vector<double> factors;  // per directed edge of the graph
+  Index closed_edges = 0;       // linear scheme: edges closed because |x| > 2
+};
+
+// `h` per subvolume of `graph` (k_BT).
+DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& h, DriftScheme scheme);
+
+}  // namespace cortex

@@ -1,0 +1,165 @@
+#include "sim/surface_species.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "sim/surface_drift.hpp"
+#include "sim/surface_graph.hpp"
+#include "sim/system.hpp"
+
+namespace cortex {
+namespace {
+
+// Dual-cell areas |C_j| = one third of the triangles around j (nm^2).
+std::vector<double> dualCellAreas(const SurfaceMesh& mesh) {
+  std::vector<double> area(static_cast<std::size_t>(mesh.numVertices()), 0.0);
+  const auto& x = mesh.positions();
+  for (const Tri& t : mesh.triangles()) {
+    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
+    for (Index v : t) area[v] += third;
+  }
+  return area;
+}
+
+}  // namespace
+
+void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector<std::unique_ptr<Membrane>>& membranes,
+                         std::uint64_t seed, const std::string& source) {
+  RandomStream random(seed, StreamId::kSurfaceSpeciesPlacement);
+  for (std::size_t m = 0; m < configs.size(); ++m) {
+    const MembraneConfig& mc = configs[m];
+    Membrane& membrane = *membranes[m];
+    const std::vector<double> area = dualCellAreas(membrane.mesh());
+    const auto n = static_cast<Index>(area.size());
+    std::vector<std::string> names;
+    std::vector<std::vector<int>> copies;
+    for (const SurfaceSpeciesConfig& s : mc.species) {
+      const std::string where = fmt::format("{}: membrane \"{}\", species \"{}\"", source, mc.name, s.name);
+      // Weights: the dual-cell areas of the vertices where copies may start.
+      std::vector<double> cumulative(static_cast<std::size_t>(n));
+      double sum = 0.0;
+      for (Index v = 0; v < n; ++v) {
+        const bool in = !s.region || s.region->contains(membrane.mesh().positions()[v]);
+        cumulative[v] = sum += in ? area[v] : 0.0;
+      }
+      if (!(sum > 0.0)) throw InputError(fmt::format("{}: region holds no vertex of the membrane", where));
+      std::int64_t count = s.copies;
+      if (s.density) {
+        const double expected = *s.density * sum * 1e-6;  // copies/µm^2 × nm^2
+        if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
+        count = std::llround(expected);
+      }
+      std::vector<int> c(static_cast<std::size_t>(n), 0);
+      for (std::int64_t k = 0; k < count; ++k) {
+        const double target = random.uniform() * sum;
+        auto v = static_cast<Index>(std::upper_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
+        v = std::min<Index>(v, n - 1);
+        while (v > 0 && cumulative[v] == cumulative[v - 1]) --v;  // a vertex of weight 0 (outside the region)
+        ++c[v];
+      }
+      names.push_back(s.name);
+      copies.push_back(std::move(c));
+    }
+    membrane.setSpecies(std::move(names), std::move(copies));
+  }
+}
+
+SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
+                                               const std::vector<MembraneConfig>& membrane_configs,
+                                               ChemistryEngine& engine,
+                                               const std::vector<std::unique_ptr<Membrane>>& membranes,
+                                               RateFactors config_factors)
+    : grid_(config.grid),
+      engine_(engine),
+      species_count_(static_cast<Index>(config.species.size())),
+      factors_(std::move(config_factors)) {
+  for (const std::string& name : config.surfaces) {
+    Surface s{-1, {}, {}};
+    for (std::size_t m = 0; m < membranes.size(); ++m)
+      if (membranes[m]->name() == name) s.membrane = static_cast<Index>(m), s.configs = membrane_configs[m].species;
+    const auto k = static_cast<Index>(surfaces_.size());
+    for (Index sp = 0; sp < species_count_; ++sp)
+      if (config.species[sp].surface == k) s.species.push_back(sp);
+    surfaces_.push_back(std::move(s));
+  }
+  for (std::size_t r = 0; r < config.reactions.size(); ++r) {
+    const ReactionDef& def = config.reactions[r];
+    bool surface_products = false;
+    for (const Stoichiometry& p : def.products) surface_products = surface_products || config.species[p.species].surface >= 0;
+    if (surface_products) continue;
+    Unbinding u{factors_.range().begin + static_cast<Index>(r), -1, {}};
+    for (const Stoichiometry& x : def.reactants) {
+      const Index k = config.species[x.species].surface;
+      if (k < 0) continue;
+      const Surface& s = surfaces_[k];
+      const auto j = static_cast<Index>(std::find(s.species.begin(), s.species.end(), x.species) - s.species.begin());
+      u.surface = k;
+      if (s.configs[j].potential) u.reactants.emplace_back(j, x.count);
+    }
+    if (!u.reactants.empty()) unbinding_.push_back(std::move(u));
+  }
+}
+
+void SurfaceSpeciesFeedback::update(System& system) {
+  closed_ = {};
+  for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+    const Surface& s = surfaces_[k];
+    const Membrane& membrane = *system.membranes()[s.membrane];
+    const SurfaceMesh& mesh = membrane.mesh();
+    DualCellGraph cells = dualCellGraph(mesh);
+    closed_.cotangent += cells.clipped_edges;
+    const Index n = mesh.numVertices();
+    std::vector<Index> holders(static_cast<std::size_t>(n));
+    for (Index v = 0; v < n; ++v) holders[v] = grid_.locate(mesh.positions()[v]);
+    std::vector<int> copies(static_cast<std::size_t>(n) * species_count_, 0);
+    for (std::size_t j = 0; j < s.species.size(); ++j) {
+      const std::vector<int>& c = membrane.speciesCopies()[j];
+      for (Index v = 0; v < n; ++v) copies[static_cast<std::size_t>(v) * species_count_ + s.species[j]] = c[v];
+    }
+    try {
+      engine_.setSurface(static_cast<Index>(k), cells.graph, holders, copies);
+    } catch (const InputError& e) {
+      // A dual cell of zero area: the mesh degenerated (the run's mesh checks say where).
+      throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": its species cannot live on this mesh: {}",
+                                 system.time(), membrane.name(), e.what()));
+    }
+    std::vector<std::vector<double>> h(s.species.size());  // potential per species and vertex (k_BT)
+    for (std::size_t j = 0; j < s.species.size(); ++j) {
+      const SurfaceSpeciesConfig& c = s.configs[j];
+      if (!c.potential) continue;
+      h[j].resize(static_cast<std::size_t>(n));
+      for (Index v = 0; v < n; ++v) h[j][v] = surfacePotential(*c.potential, mesh.positions()[v]);
+      const DriftFactors drift = driftFactors(cells.graph, h[j], c.drift);
+      closed_.drift += drift.closed_edges;
+      engine_.setSurfaceDrift(s.species[j], drift.factors);
+    }
+    const Index start = engine_.regionStart(static_cast<Index>(k) + 1);
+    for (const Unbinding& u : unbinding_) {
+      if (u.surface != static_cast<Index>(k)) continue;
+      for (Index v = 0; v < n; ++v) {
+        double exponent = 0.0;
+        for (const auto& [j, count] : u.reactants) exponent += count * h[j][v];
+        factors_.set(u.reaction, start + v, std::exp(exponent));
+      }
+    }
+  }
+}
+
+void SurfaceSpeciesFeedback::collect(System& system) const {
+  for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+    const Surface& s = surfaces_[k];
+    Membrane& membrane = *system.membranes()[s.membrane];
+    const Index start = engine_.regionStart(static_cast<Index>(k) + 1);
+    const Index n = membrane.mesh().numVertices();
+    for (std::size_t j = 0; j < s.species.size(); ++j) {
+      std::vector<int>& c = membrane.speciesCopies(static_cast<Index>(j));
+      for (Index v = 0; v < n; ++v) c[v] = engine_.copies(start + v, s.species[j]);
+    }
+  }
+}
+
+}  // namespace cortex
