@@ -105,7 +105,7 @@ def run(args):
             ax.plot(rows[:, 0], rows[:, 1], "-", color=f"C{i}", label=label)
         ax.axhline(1.0, color="0.6", lw=0.8, ls="--")
         ax.set_xlabel("time (s)")
-        ax.set_ylabel("fraction of equilibrium count past the barrier")
+        ax.set_ylabel("past the barrier / equilibrium")
         ax.set_ylim(0.0, 1.1)
         ax.grid(alpha=0.3)
         if len(tables) > 1:
