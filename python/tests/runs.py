@@ -221,8 +221,70 @@ height = 1.0
 size = 700.0
 """
 
+# Curvature sorting (examples/curvature_sorting.toml, small and short): a curvature-
+# sensing protein binding from one well-mixed box to vesicles of radii 100 and 250 nm.
+SORTING = """
+[simulation]
+seed = 6
+end_time = 0.6
+chemistry_window = 0.05
+snapshot_interval = 0.1
+
+[[membrane]]
+name = "small"
+shape = "sphere"
+center = [300.0, 700.0, 700.0]
+radius = 100.0
+mesh_size = 30.0
+bending_modulus = 100.0
+
+[[membrane.species]]
+name = "B_small"
+
+[membrane.species.curvature]
+area = 20.0
+bending_modulus = 200.0
+spontaneous_curvature = 0.1
+
+[[membrane]]
+name = "large"
+shape = "sphere"
+center = [950.0, 700.0, 700.0]
+radius = 250.0
+mesh_size = 50.0
+bending_modulus = 100.0
+
+[[membrane.species]]
+name = "B_large"
+
+[membrane.species.curvature]
+area = 20.0
+bending_modulus = 200.0
+spontaneous_curvature = 0.1
+
+[compartments]
+size = 1400.0
+
+[[species]]
+name = "C"
+copies = 3000
+
+[[reaction]]
+equation = "C -> B_small"
+rate = 30000.0
+[[reaction]]
+equation = "B_small -> C"
+rate = 10.0
+[[reaction]]
+equation = "C -> B_large"
+rate = 30000.0
+[[reaction]]
+equation = "B_large -> C"
+rate = 10.0
+"""
+
 CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE,
-           "barrier": BARRIER}
+           "barrier": BARRIER, "sorting": SORTING}
 
 
 def root():

@@ -25,6 +25,15 @@ SurfacePotentialConfig readPotential(const ConfigReader& r) {
   return p;
 }
 
+CurvatureSensingConfig readCurvature(const ConfigReader& r) {
+  CurvatureSensingConfig c;
+  c.area = r.requiredNumber("area", Range::positive(), "nm^2");
+  c.bending_modulus = r.requiredNumber("bending_modulus", Range::nonNegative(), "pN nm");
+  c.spontaneous_curvature = r.number("spontaneous_curvature", 0.0, Range{-1.0, 1.0}, "1/nm");
+  r.finish();
+  return c;
+}
+
 SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   SurfaceSpeciesConfig s;
   if (!r.has("name")) r.fail("name", "is required");
@@ -35,6 +44,7 @@ SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   if (r.has("density")) s.density = r.requiredNumber("density", Range::nonNegative(), "copies/µm^2");
   s.region = readBoxRegion(r, "region");
   if (const auto p = r.table("potential")) s.potential = readPotential(*p);
+  if (const auto c = r.table("curvature")) s.curvature = readCurvature(*c);
   s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear
                                                                                  : DriftScheme::kExponential;
   r.finish();

@@ -48,6 +48,15 @@ struct SurfacePotentialConfig {
   double slope = 0.0;     // k_BT/nm (ramp)
 };
 
+// Curvature sensing of a membrane species (thesis 3.2.5, eqs. 3.17–3.19): a protein of
+// area A_p, bending rigidity κ_p and spontaneous curvature H_p; the lipid's κ_l is the
+// membrane's bending modulus (docs/proteins.md).
+struct CurvatureSensingConfig {
+  double area = 0.0;                   // nm^2, A_p
+  double bending_modulus = 0.0;        // pN nm, κ_p
+  double spontaneous_curvature = 0.0;  // 1/nm, H_p
+};
+
 // How a potential biases the hops along an edge whose ends differ by x = β(h_j − h_i):
 // the exponentially fitted (Scharfetter–Gummel) factor x/(eˣ − 1), exact for the
 // Boltzmann distribution at any x, or the linear 1 − x/2, whose rates turn negative for
@@ -67,6 +76,7 @@ struct SurfaceSpeciesConfig {
   std::optional<double> density;
   std::optional<BoxRegion> region;
   std::optional<SurfacePotentialConfig> potential;
+  std::optional<CurvatureSensingConfig> curvature;
   DriftScheme drift = DriftScheme::kExponential;
 };
 

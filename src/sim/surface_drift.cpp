@@ -23,14 +23,21 @@ double bernoulli(double x) { return std::abs(x) < 1e-12 ? 1.0 - 0.5 * x : x / st
 }  // namespace
 
 DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& h, DriftScheme scheme) {
+  return driftFactors(graph, h, h, scheme);
+}
+
+DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& arrive,
+                          const std::vector<double>& leave, DriftScheme scheme) {
   DriftFactors out;
   out.factors.resize(static_cast<std::size_t>(graph.numEdges()));
   for (Index i = 0; i < graph.count(); ++i)
     for (Index e = graph.start[i]; e < graph.start[i + 1]; ++e) {
-      const double x = h[graph.target[e]] - h[i];
+      const Index j = graph.target[e];
+      const double x = arrive[j] - leave[i];
+      const double reverse = arrive[i] - leave[j];
       if (scheme == DriftScheme::kExponential) {
         out.factors[e] = bernoulli(x);
-      } else if (std::abs(x) >= 2.0) {  // at |x| = 2 one way would be 0, the other 2
+      } else if (std::max(std::abs(x), std::abs(reverse)) >= 2.0) {  // both ways, so at |x| = 2 not 0 one way and 2 the other
         out.factors[e] = 0.0;
         ++out.closed_edges;  // counted from both ends
       } else {

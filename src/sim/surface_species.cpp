@@ -7,6 +7,8 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "membrane/curvature.hpp"
+#include "sim/curvature_sensing.hpp"
 #include "sim/surface_drift.hpp"
 #include "sim/surface_graph.hpp"
 #include "sim/system.hpp"
@@ -72,15 +74,20 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
                                                const std::vector<MembraneConfig>& membrane_configs,
                                                ChemistryEngine& engine,
                                                const std::vector<std::unique_ptr<Membrane>>& membranes,
-                                               RateFactors config_factors)
+                                               RateFactors config_factors, double thermal_energy)
     : grid_(config.grid),
       engine_(engine),
       species_count_(static_cast<Index>(config.species.size())),
-      factors_(std::move(config_factors)) {
+      factors_(std::move(config_factors)),
+      thermal_energy_(thermal_energy) {
   for (const std::string& name : config.surfaces) {
     Surface s{-1, {}, {}};
     for (std::size_t m = 0; m < membranes.size(); ++m)
       if (membranes[m]->name() == name) s.membrane = static_cast<Index>(m), s.configs = membrane_configs[m].species;
+    for (const SurfaceSpeciesConfig& c : s.configs)
+      if (c.curvature && !(membranes[s.membrane]->mechanics().bending.modulus.at(0.0) > 0.0))
+        throw InputError(fmt::format("membrane \"{}\": species \"{}\" senses curvature, which needs a "
+                                     "bending_modulus > 0 (the lipid's κ in eq. 3.19)", name, c.name));
     const auto k = static_cast<Index>(surfaces_.size());
     for (Index sp = 0; sp < species_count_; ++sp)
       if (config.species[sp].surface == k) s.species.push_back(sp);
@@ -98,7 +105,7 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
       const Surface& s = surfaces_[k];
       const auto j = static_cast<Index>(std::find(s.species.begin(), s.species.end(), x.species) - s.species.begin());
       u.surface = k;
-      if (s.configs[j].potential) u.reactants.emplace_back(j, x.count);
+      if (s.configs[j].potential || s.configs[j].curvature) u.reactants.emplace_back(j, x.count);
     }
     if (!u.reactants.empty()) unbinding_.push_back(std::move(u));
   }
@@ -127,13 +134,39 @@ void SurfaceSpeciesFeedback::update(System& system) {
       throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": its species cannot live on this mesh: {}",
                                  system.time(), membrane.name(), e.what()));
     }
-    std::vector<std::vector<double>> h(s.species.size());  // potential per species and vertex (k_BT)
+    // Energy (k_BT) per species and vertex of a copy arriving there and of one already
+    // there leaving: equal for an external potential; for curvature sensing V_H with the
+    // vertex's copies n, and n − 1 (sim/surface_drift.hpp).
+    std::vector<std::vector<double>> arrive(s.species.size()), leave(s.species.size());
+    std::vector<double> curvature;  // per vertex, 1/nm, when a species senses it
+    double kappa_lipid = 0.0;
     for (std::size_t j = 0; j < s.species.size(); ++j) {
       const SurfaceSpeciesConfig& c = s.configs[j];
-      if (!c.potential) continue;
-      h[j].resize(static_cast<std::size_t>(n));
-      for (Index v = 0; v < n; ++v) h[j][v] = surfacePotential(*c.potential, mesh.positions()[v]);
-      const DriftFactors drift = driftFactors(cells.graph, h[j], c.drift);
+      if (!c.potential && !c.curvature) continue;
+      arrive[j].assign(static_cast<std::size_t>(n), 0.0);
+      if (c.potential)
+        for (Index v = 0; v < n; ++v) arrive[j][v] = surfacePotential(*c.potential, mesh.positions()[v]);
+      leave[j] = arrive[j];
+      if (c.curvature) {
+        if (curvature.empty()) {
+          curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
+                                          membrane.mechanics().bending.estimator);
+          kappa_lipid = membrane.mechanics().bending.modulus.at(system.time());
+          if (!(kappa_lipid > 0.0))
+            throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature "
+                                       "sensing needs it > 0", system.time(), membrane.name(), kappa_lipid));
+        }
+        const std::vector<int>& copies_j = membrane.speciesCopies()[j];
+        for (Index v = 0; v < n; ++v) {
+          const auto energy = [&](int copies) {
+            return curvatureSensingEnergy(*c.curvature, kappa_lipid, curvature[v], copies, cells.graph.size[v]) /
+                   thermal_energy_;
+          };
+          arrive[j][v] += energy(copies_j[v]);
+          leave[j][v] += energy(std::max(copies_j[v] - 1, 0));
+        }
+      }
+      const DriftFactors drift = driftFactors(cells.graph, arrive[j], leave[j], c.drift);
       closed_.drift += drift.closed_edges;
       engine_.setSurfaceDrift(s.species[j], drift.factors);
     }
@@ -142,7 +175,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
       if (u.surface != static_cast<Index>(k)) continue;
       for (Index v = 0; v < n; ++v) {
         double exponent = 0.0;
-        for (const auto& [j, count] : u.reactants) exponent += count * h[j][v];
+        for (const auto& [j, count] : u.reactants) exponent += count * leave[j][v];
         factors_.set(u.reaction, start + v, std::exp(exponent));
       }
     }

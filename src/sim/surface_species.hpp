@@ -29,14 +29,21 @@ class SurfaceSpeciesFeedback final : public Feedback {
   // `config_factors`: the rate factors of the config's reactions (numbered model-wide
   // from config_factors.range().begin), of which this writes those of unbinding
   // reactions on the vertices.
+  // `thermal_energy` k_BT (pN nm). Throws InputError for curvature sensing on a
+  // membrane without bending rigidity.
   SurfaceSpeciesFeedback(const ChemistryConfig& config, const std::vector<MembraneConfig>& membrane_configs,
                          ChemistryEngine& engine, const std::vector<std::unique_ptr<Membrane>>& membranes,
-                         RateFactors config_factors);
+                         RateFactors config_factors, double thermal_energy);
   // The membranes' dual cells and copies become the engine's surfaces, the species'
-  // potentials at the vertices' new positions their drift (sim/surface_drift.hpp), and
+  // potentials at the vertices' new positions their drift (sim/surface_drift.hpp): the
+  // external one plus, for curvature-sensing species, V_H at each vertex's mean
+  // curvature and current copies (sim/curvature_sensing.hpp: V_H(n) for a copy arriving,
+  // V_H(n − 1) for one leaving; held until the next update, i.e. for one chemistry
+  // window), and
   // unbinding reactions fire at r e^{βV} (thesis eq. 3.14): a reaction whose reactants
   // include membrane species with a potential and whose products are all 3D species
-  // gets the factor exp(Σ ν_s V_s(j)) on vertex j (V in k_BT, ν_s its reactant count).
+  // gets the factor exp(Σ ν_s V_s(j)) on vertex j (V in k_BT, the leaving copy's energy;
+  // ν_s its reactant count).
   void update(System& system) override;
   // The engine's surface copies go back to the membranes' vertices (after a window).
   void collect(System& system) const;
@@ -67,6 +74,7 @@ class SurfaceSpeciesFeedback final : public Feedback {
   std::vector<Unbinding> unbinding_;
   RateFactors factors_;
   ClosedEdges closed_;
+  double thermal_energy_;
 };
 
 }  // namespace cortex

@@ -119,8 +119,9 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   const RateFactors config_factors = chemistry_->claimRateFactors(config_reactions);
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_factors));
   if (!cc.surfaces.empty()) {
-    auto surfaces = std::make_unique<SurfaceSpeciesFeedback>(cc, config.membranes, *chemistry_, membranes_,
-                                                             config_factors);
+    auto surfaces = std::make_unique<SurfaceSpeciesFeedback>(
+        cc, config.membranes, *chemistry_, membranes_, config_factors,
+        constants::kBoltzmann * config.simulation.temperature);
     surface_species_ = surfaces.get();
     feedback_.push_back(std::move(surfaces));
   }
