@@ -183,6 +183,15 @@ const Case kCases[] = {
      onMembranes([](Membrane& m) { return std::make_unique<VolumeEnergy>(m, m.mechanics().volume); }, true)},
     {"membrane_bending",
      onMembranes([](Membrane& m) { return std::make_unique<BendingEnergy>(m, m.mechanics().bending); })},
+    // A protein coat (curvature generation) of random copies, some vertices covered over.
+    {"membrane_bending_coated", onMembranes([](Membrane& m) {
+       std::mt19937 rng(9);
+       std::vector<int> copies(static_cast<std::size_t>(m.mesh().numVertices()));
+       for (int& n : copies) n = std::uniform_int_distribution<int>(0, 40)(rng);
+       m.setSpecies({"coat"}, {copies});
+       m.setCoat(ProteinCoat{0, 50.0, 150.0, 0.05});
+       return std::make_unique<BendingEnergy>(m, m.mechanics().bending);
+     })},
     {"membrane_regularization", onMembranes([](Membrane& m) {
        return std::make_unique<RegularizationEnergy>(m, m.mechanics().regularization);
      })},

@@ -30,6 +30,7 @@ CurvatureSensingConfig readCurvature(const ConfigReader& r) {
   c.area = r.requiredNumber("area", Range::positive(), "nm^2");
   c.bending_modulus = r.requiredNumber("bending_modulus", Range::nonNegative(), "pN nm");
   c.spontaneous_curvature = r.number("spontaneous_curvature", 0.0, Range{-1.0, 1.0}, "1/nm");
+  c.generates = r.boolean("generates", false);
   r.finish();
   return c;
 }
@@ -57,8 +58,11 @@ std::vector<SurfaceSpeciesConfig> readSurfaceSpecies(const ConfigReader& membran
   std::vector<SurfaceSpeciesConfig> out;
   for (const ConfigReader& r : membrane.tableArray("species")) {
     SurfaceSpeciesConfig s = readOne(r);
-    for (const SurfaceSpeciesConfig& other : out)
+    for (const SurfaceSpeciesConfig& other : out) {
       if (other.name == s.name) r.fail("name", fmt::format("\"{}\" is declared twice on this membrane", s.name));
+      if (s.curvature && s.curvature->generates && other.curvature && other.curvature->generates)
+        r.fail("curvature", fmt::format("\"{}\" generates curvature as well: one species per membrane may", other.name));
+    }
     out.push_back(std::move(s));
   }
   return out;

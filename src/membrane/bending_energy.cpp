@@ -1,5 +1,7 @@
 #include "membrane/bending_energy.hpp"
 
+#include <algorithm>
+
 #include "core/parallel.hpp"
 #include "membrane/curvature.hpp"
 #include "mesh/corner_gather.hpp"
@@ -14,8 +16,16 @@ namespace cortex {
 //   g_p = 1/2 C n x e_p - e_p x (W/2 + B/6) + 1/2 n x (alpha_{p-1} - alpha_{p+1})
 // where C = (c_a + c_b + c_c)/3, B = sum_k beta_k and
 // W = sum_k (I - n n^T)(e_k x alpha_k) / |n|.
+//
+// With a coat, E_v = A_v e(phi_v) with e(phi) = 2 kappa(phi) (H_v - H0 - H_c phi)^2 and
+// phi_v = n_v a / A_v: dE_v/dA_v = e - phi e'(phi) (0 for the phi term once phi is capped
+// at 1) and dE_v/dH_v = 4 kappa(phi) (H_v - H0 - H_c phi) A_v.
 double BendingEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
+  const std::optional<ProteinCoat>& coat = membrane_.coat();
+  const std::vector<int>* coat_copies = coat ? &membrane_.speciesCopies()[coat->species] : nullptr;
+  const double kappa_both = coat ? kappa_ + coat->bending_modulus : 0.0;
+  const double coat_h0 = coat ? coat->spontaneous_curvature * coat->bending_modulus / kappa_both : 0.0;
   const MeshTopology& topo = membrane_.topology();
   const CurvatureEstimator estimator = p_.estimator;
   const Index nv = topo.numVertices();
@@ -37,14 +47,29 @@ double BendingEnergy::evaluate(const Evaluation& e) {
     }
     const CurvatureAndDerivative c =
         meanCurvature(g.area_gradient[v], g.volume_gradient[v], estimator);
-    const double dh = c.H - h0_;
+    double kappa = kappa_, dh = c.H - h0_, area_coefficient;
+    if (coat && (*coat_copies)[v] > 0) {
+      const double raw = (*coat_copies)[v] * coat->area / g.vertex_area[v];
+      const double phi = std::min(raw, 1.0);
+      const double g_phi = (1.0 - phi) / kappa_ + phi / kappa_both;
+      kappa = 1.0 / g_phi;
+      dh -= coat_h0 * phi;
+      const double density = 2.0 * kappa * dh * dh;
+      // e'(phi) = 2 kappa' dh^2 - 4 kappa dh H_c, kappa' = kappa^2 (1/kappa_l - 1/(kappa_l + kappa_p)).
+      const double de = raw < 1.0 ? 2.0 * kappa * kappa * (1.0 / kappa_ - 1.0 / kappa_both) * dh * dh -
+                                        4.0 * kappa * dh * coat_h0
+                                  : 0.0;
+      area_coefficient = density - phi * de;
+    } else {
+      area_coefficient = 2.0 * kappa * dh * dh;
+    }
     if (want_gradient) {
-      const double s = 4.0 * kappa_ * dh * g.vertex_area[v];
-      area_coefficient_[v] = 2.0 * kappa_ * dh * dh;
+      const double s = 4.0 * kappa * dh * g.vertex_area[v];
+      area_coefficient_[v] = area_coefficient;
       alpha_[v] = s * c.alpha;
       beta_[v] = s * c.beta;
     }
-    return 2.0 * kappa_ * dh * dh * g.vertex_area[v];
+    return 2.0 * kappa * dh * dh * g.vertex_area[v];
   });
   if (!want_gradient) return energy;
 

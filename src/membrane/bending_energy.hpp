@@ -1,5 +1,9 @@
 // Helfrich bending energy (thesis eq. 2.7): E = 2 kappa sum_v (H_v - H0)^2 A_v over
 // interior vertices, with H_v from the signed or unsigned estimator (curvature.hpp).
+// Where a protein coat covers a fraction phi_v = min(n_v a / A_v, 1) of a vertex's area
+// (Membrane::coat, thesis eqs. 3.18-3.19), kappa and H0 there become
+// kappa(phi) = ((1 - phi)/kappa + phi/(kappa + kappa_p))^-1 and H0 + H_c phi; phi follows
+// A_v, so the area derivative carries it too.
 #pragma once
 
 #include "membrane/membrane_term.hpp"

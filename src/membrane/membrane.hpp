@@ -78,6 +78,18 @@ struct MembraneEquilibrium {
   double strain_since_remesh = 0.0;
 };
 
+// Curvature generation (thesis 3.2.5, eqs. 3.18–3.19): a membrane species whose copies
+// coat the lipid. At a vertex with n copies over its area A_v the covered fraction is
+// φ = min(n a / A_v, 1), and the bending energy there becomes 2 κ(φ) (H − H₀ − H_c φ)² A_v
+// with κ(φ) = ((1 − φ)/κ + φ/(κ + κ_p))⁻¹ and H_c = H_p κ_p / (κ + κ_p), κ and H₀ the
+// membrane's own (bending_energy.hpp).
+struct ProteinCoat {
+  Index species = 0;             // index into Membrane::speciesCopies()
+  double area = 0.0;             // nm^2 per copy, a
+  double bending_modulus = 0.0;  // pN nm, κ_p
+  double spontaneous_curvature = 0.0;  // 1/nm, H_p
+};
+
 // Reference state fixed when the membrane is created (and restored from checkpoints).
 struct MembraneMaterial {
   double initial_area = 0.0;
@@ -137,6 +149,9 @@ class Membrane final : public Body {
   // std::invalid_argument unless there is one non-negative count per vertex.
   void setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies);
   const std::vector<std::string>& speciesNames() const { return species_names_; }
+  // The species whose copies change the bending energy, if any (ProteinCoat).
+  const std::optional<ProteinCoat>& coat() const { return coat_; }
+  void setCoat(std::optional<ProteinCoat> coat) { coat_ = coat; }
   const std::vector<std::vector<int>>& speciesCopies() const { return species_copies_; }
   std::vector<int>& speciesCopies(Index species) { return species_copies_[species]; }
 
@@ -156,6 +171,7 @@ class Membrane final : public Body {
   RemeshStats remesh_totals_;
   std::vector<std::string> species_names_;
   std::vector<std::vector<int>> species_copies_;  // [species][vertex]
+  std::optional<ProteinCoat> coat_;
   MembraneEquilibrium equilibrium_;
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;

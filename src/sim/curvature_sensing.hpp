@@ -1,7 +1,9 @@
 // Curvature sensing of membrane proteins (thesis 3.2.5, eqs. 3.17–3.19): the bending
 // energy density of a membrane patch whose area fraction φ is covered by proteins,
-//   e(φ) = 2 κ(φ) (H − H₀ φ)²,  κ(φ) = ((1 − φ)/κ_l + φ/(κ_l + κ_p))⁻¹,
+//   e(φ) = 2 κ(φ) (H − H_l − H₀ φ)²,  κ(φ) = ((1 − φ)/κ_l + φ/(κ_l + κ_p))⁻¹,
 //   H₀ = H_p κ_p / (κ_l + κ_p),
+// (H_l the lipid's own spontaneous curvature, 0 in the thesis; the same e as the
+// membrane's bending energy under a protein coat, membrane/bending_energy.hpp),
 // and the energy of one protein in the dual cell of area |C| around a vertex of mean
 // curvature H that holds n other copies: its chemical potential
 //   V_H = A_p ∂e/∂φ at φ = n A_p / |C|,
@@ -10,17 +12,16 @@
 // difference form |C| [e(φ + A_p/|C|) − e(φ)] adds to it a self-energy
 // ≈ A_p² e''(0) / (2|C|) ≈ 2 κ_l H₀² A_p² / |C| that depends on the mesh (a protein
 // spread over its cell interacting with itself; docs/proteins.md). φ is capped at 1 (a
-// cell fully covered); the lipid's own spontaneous curvature is not part of e (the
-// thesis' form).
+// cell fully covered).
 #pragma once
 
 #include "sim/run_config.hpp"
 
 namespace cortex {
 
-// pN nm. `kappa_lipid` κ_l (pN nm, > 0), `mean_curvature` H (1/nm), `copies` n other
-// copies in the cell, `cell_area` |C| (nm^2, > 0).
-double curvatureSensingEnergy(const CurvatureSensingConfig& protein, double kappa_lipid, double mean_curvature,
-                              double copies, double cell_area);
+// pN nm. `kappa_lipid` κ_l (pN nm, > 0), `lipid_curvature` H_l (1/nm), `mean_curvature`
+// H (1/nm), `copies` n other copies in the cell, `cell_area` |C| (nm^2, > 0).
+double curvatureSensingEnergy(const CurvatureSensingConfig& protein, double kappa_lipid, double lipid_curvature,
+                              double mean_curvature, double copies, double cell_area);
 
 }  // namespace cortex

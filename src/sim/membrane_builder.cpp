@@ -89,6 +89,9 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
       throw InputError(fmt::format("checkpoint is damaged: {}", e.what()));
     }
   }
+  for (std::size_t j = 0; j < c.species.size(); ++j)
+    if (const auto& k = c.species[j].curvature; k && k->generates)
+      membrane->setCoat(ProteinCoat{static_cast<Index>(j), k->area, k->bending_modulus, k->spontaneous_curvature});
   if (c.remesh)
     membrane->setRemeshing(restored && restored->remeshing ? *restored->remeshing
                                                            : remeshSettings(c, membrane->mesh(), where));

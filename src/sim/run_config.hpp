@@ -55,6 +55,9 @@ struct CurvatureSensingConfig {
   double area = 0.0;                   // nm^2, A_p
   double bending_modulus = 0.0;        // pN nm, κ_p
   double spontaneous_curvature = 0.0;  // 1/nm, H_p
+  // The copies also change the membrane's bending energy where they are (curvature
+  // generation, Membrane::coat): the two-way coupling. At most one species per membrane.
+  bool generates = false;
 };
 
 // How a potential biases the hops along an edge whose ends differ by x = β(h_j − h_i):

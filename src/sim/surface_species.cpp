@@ -139,7 +139,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
     // vertex's copies n, and n − 1 (sim/surface_drift.hpp).
     std::vector<std::vector<double>> arrive(s.species.size()), leave(s.species.size());
     std::vector<double> curvature;  // per vertex, 1/nm, when a species senses it
-    double kappa_lipid = 0.0;
+    double kappa_lipid = 0.0, lipid_curvature = 0.0;
     for (std::size_t j = 0; j < s.species.size(); ++j) {
       const SurfaceSpeciesConfig& c = s.configs[j];
       if (!c.potential && !c.curvature) continue;
@@ -152,6 +152,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
           curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
                                           membrane.mechanics().bending.estimator);
           kappa_lipid = membrane.mechanics().bending.modulus.at(system.time());
+          lipid_curvature = membrane.mechanics().bending.spontaneous_curvature.at(system.time());
           if (!(kappa_lipid > 0.0))
             throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature "
                                        "sensing needs it > 0", system.time(), membrane.name(), kappa_lipid));
@@ -159,7 +160,8 @@ void SurfaceSpeciesFeedback::update(System& system) {
         const std::vector<int>& copies_j = membrane.speciesCopies()[j];
         for (Index v = 0; v < n; ++v) {
           const auto energy = [&](int copies) {
-            return curvatureSensingEnergy(*c.curvature, kappa_lipid, curvature[v], copies, cells.graph.size[v]) /
+            return curvatureSensingEnergy(*c.curvature, kappa_lipid, lipid_curvature, curvature[v], copies,
+                                          cells.graph.size[v]) /
                    thermal_energy_;
           };
           arrive[j][v] += energy(copies_j[v]);

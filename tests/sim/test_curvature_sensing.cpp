@@ -43,15 +43,15 @@ TEST(CurvatureSensing, EnergyOfOneProteinIsTheDiluteClosedFormAndTheDerivativeOf
   const CurvatureSensingConfig p{kArea, kKappaProtein, kHp};
   for (double H : {-0.02, 0.0, 0.005, 0.01, 0.05}) {
     for (double cell : {50.0, 400.0, 1e9})
-      EXPECT_NEAR(curvatureSensingEnergy(p, kKappaLipid, H, 0.0, cell), dilute(H), 1e-12) << H << " " << cell;
+      EXPECT_NEAR(curvatureSensingEnergy(p, kKappaLipid, 0.0, H, 0.0, cell), dilute(H), 1e-12) << H << " " << cell;
     const double n = 3.0, cell = 400.0, phi = n * kArea / cell, step = 1e-5;
     const double difference = kArea * (density(H, phi + step) - density(H, phi - step)) / (2.0 * step);
-    EXPECT_NEAR(curvatureSensingEnergy(p, kKappaLipid, H, n, cell), difference, 1e-6 * std::max(1.0, std::abs(difference)));
+    EXPECT_NEAR(curvatureSensingEnergy(p, kKappaLipid, 0.0, H, n, cell), difference, 1e-6 * std::max(1.0, std::abs(difference)));
   }
   // Already-bound copies raise the cost of the next (crowding through κ(φ) and H₀ φ).
-  EXPECT_GT(curvatureSensingEnergy(p, kKappaLipid, 0.01, 20.0, 400.0),
-            curvatureSensingEnergy(p, kKappaLipid, 0.01, 0.0, 400.0));
-  EXPECT_NEAR(curvatureSensingEnergy({kArea, 0.0, 0.0}, kKappaLipid, 0.01, 3.0, 400.0), 0.0, 1e-12);
+  EXPECT_GT(curvatureSensingEnergy(p, kKappaLipid, 0.0, 0.01, 20.0, 400.0),
+            curvatureSensingEnergy(p, kKappaLipid, 0.0, 0.01, 0.0, 400.0));
+  EXPECT_NEAR(curvatureSensingEnergy({kArea, 0.0, 0.0}, kKappaLipid, 0.0, 0.01, 3.0, 400.0), 0.0, 1e-12);
 }
 
 std::string prolateConfig(bool sensing) {
