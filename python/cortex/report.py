@@ -22,6 +22,15 @@ def membrane_lines(snapshot, membrane):
     if membrane.mean_curvature is not None and len(membrane.mean_curvature):
         h = membrane.mean_curvature
         lines.append(f"  mean curvature {h.min():.4g} .. {h.max():.4g} 1/nm")
+    if membrane.species:
+        # Membrane species: copies, and the mean and largest density over the vertices' cells.
+        cells = membrane.cell_areas()
+        parts = []
+        for name, copies in membrane.species.items():
+            density = copies / cells * 1e6
+            parts.append(f"{name} {int(copies.sum())} (mean {copies.sum() / cells.sum() * 1e6:.4g}, "
+                         f"max {density.max():.4g} /um^2)")
+        lines.append("  species: " + ", ".join(parts))
     return lines
 
 

@@ -128,6 +128,8 @@ class CommandsTest(unittest.TestCase):
         self.assertIn("membranes.vesicle.reduced_volume", stdout)
         self.assertIn("8 filaments", self.ok("info", self.runs["filaments"]))
         self.assertIn("species (copies, grid 3x3x2)", self.ok("info", self.runs["species"]))
+        # Membrane species: all 2000 copies of the barrier run, in every snapshot.
+        self.assertIn("species: M 2000 (mean", self.ok("info", self.runs["barrier"], "--snapshot", "last"))
 
     def test_open_patch_is_not_a_vesicle(self):
         stdout = self.ok("info", self.runs["patch"])

@@ -164,6 +164,10 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   if (m.mesh_size > 0 && m.max_size < m.mesh_size)
     r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
   m.species = readSurfaceSpecies(r);
+  for (const SurfaceSpeciesConfig& sp : m.species)
+    if (sp.curvature && !(m.mechanics.bending.modulus.at(0.0) > 0.0))
+      r.fail("bending_modulus", fmt::format("must be > 0: species \"{}\" senses curvature, which needs the "
+                                            "lipid's κ (thesis eq. 3.19)", sp.name));
   r.finish();
   return m;
 }

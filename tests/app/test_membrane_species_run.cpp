@@ -86,17 +86,33 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
   replaceOnce(region, "rate = 100.0", "rate = 100.0\nregion = { min = [0.0, 0.0, 0.0], max = [900.0, 900.0, 900.0] }");
   expectCheckFails(region, "reaction.0.region", "membrane species");
 
+  std::string nan = exampleText();
+  replaceOnce(nan, "diffusion = 1.0e6", "diffusion = nan");
+  expectCheckFails(nan, "membrane.0.species.0.diffusion", "finite");
+
+  std::string soft = exampleText();
+  replaceOnce(soft, "bending_modulus = 100.0", "bending_modulus = 0.0");
+  replaceOnce(soft, "name = \"M\"", "name = \"M\"\ncurvature = { area = 10.0, bending_modulus = 50.0 }");
+  expectCheckFails(soft, "membrane.0.bending_modulus", "senses curvature");
+
   std::string unknown = exampleText();
   replaceOnce(unknown, "copies = 5000", "copies = 5000\ncopise = 3");
   expectCheckFails(unknown, "copise", "");
 
-  // A start region that holds no vertex is found when the mesh is built: still exit 2.
+  // Found when the mesh is built, still exit 2 naming the file: a start region that holds
+  // no vertex, a density that would make more copies than 32-bit counts hold.
   std::string empty = exampleText();
   replaceOnce(empty, "min = [0.0, 0.0, 1400.0]", "min = [0.0, 0.0, 1700.0]");
-  TempDir dir;
-  const RunResult r = runConfig(writeConfig(dir.path(), empty), dir / "out", {}, dir.path());
-  EXPECT_EQ(r.exit_code, 2) << describe(r);
-  EXPECT_NE(r.err.find("species \"P\": region holds no vertex"), std::string::npos) << r.err;
+  std::string dense = exampleText();
+  replaceOnce(dense, "copies = 5000", "density = 1.0e12");
+  for (const auto& [text, words] : {std::pair{empty, "species \"P\": region holds no vertex"},
+                                    std::pair{dense, "species \"P\": density gives"}}) {
+    TempDir dir;
+    const RunResult r = runConfig(writeConfig(dir.path(), text), dir / "out", {}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << describe(r);
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("config.toml"), std::string::npos) << r.err;
+  }
 }
 
 TEST(MembraneSpeciesRun, ExampleIsAccepted) {
