@@ -134,52 +134,68 @@ void SurfaceSpeciesFeedback::update(System& system) {
       throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": its species cannot live on this mesh: {}",
                                  system.time(), membrane.name(), e.what()));
     }
-    // Energy (k_BT) per species and vertex of a copy arriving there and of one already
-    // there leaving: equal for an external potential; for curvature sensing V_H with the
-    // vertex's copies n, and n − 1 (sim/surface_drift.hpp).
-    std::vector<std::vector<double>> arrive(s.species.size()), leave(s.species.size());
-    std::vector<double> curvature;  // per vertex, 1/nm, when a species senses it
-    double kappa_lipid = 0.0, lipid_curvature = 0.0;
+    const std::vector<CopyEnergies> energies = copyEnergies(s, membrane, cells.graph, system.time());
     for (std::size_t j = 0; j < s.species.size(); ++j) {
-      const SurfaceSpeciesConfig& c = s.configs[j];
-      if (!c.potential && !c.curvature) continue;
-      arrive[j].assign(static_cast<std::size_t>(n), 0.0);
-      if (c.potential)
-        for (Index v = 0; v < n; ++v) arrive[j][v] = surfacePotential(*c.potential, mesh.positions()[v]);
-      leave[j] = arrive[j];
-      if (c.curvature) {
-        if (curvature.empty()) {
-          curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
-                                          membrane.mechanics().bending.estimator);
-          kappa_lipid = membrane.mechanics().bending.modulus.at(system.time());
-          lipid_curvature = membrane.mechanics().bending.spontaneous_curvature.at(system.time());
-          if (!(kappa_lipid > 0.0))
-            throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature "
-                                       "sensing needs it > 0", system.time(), membrane.name(), kappa_lipid));
-        }
-        const std::vector<int>& copies_j = membrane.speciesCopies()[j];
-        for (Index v = 0; v < n; ++v) {
-          const auto energy = [&](int copies) {
-            return curvatureSensingEnergy(*c.curvature, kappa_lipid, lipid_curvature, curvature[v], copies,
-                                          cells.graph.size[v]) /
-                   thermal_energy_;
-          };
-          arrive[j][v] += energy(copies_j[v]);
-          leave[j][v] += energy(std::max(copies_j[v] - 1, 0));
-        }
-      }
-      const DriftFactors drift = driftFactors(cells.graph, arrive[j], leave[j], c.drift);
+      if (energies[j].arrive.empty()) continue;
+      const DriftFactors drift = driftFactors(cells.graph, energies[j].arrive, energies[j].leave, s.configs[j].drift);
       closed_.drift += drift.closed_edges;
       engine_.setSurfaceDrift(s.species[j], drift.factors);
     }
-    const Index start = engine_.regionStart(static_cast<Index>(k) + 1);
-    for (const Unbinding& u : unbinding_) {
-      if (u.surface != static_cast<Index>(k)) continue;
-      for (Index v = 0; v < n; ++v) {
-        double exponent = 0.0;
-        for (const auto& [j, count] : u.reactants) exponent += count * leave[j][v];
-        factors_.set(u.reaction, start + v, std::exp(exponent));
-      }
+    setUnbindingFactors(static_cast<Index>(k), energies, n, system.time());
+  }
+}
+
+std::vector<SurfaceSpeciesFeedback::CopyEnergies> SurfaceSpeciesFeedback::copyEnergies(
+    const Surface& s, const Membrane& membrane, const SubvolumeGraph& cells, double t) const {
+  const SurfaceMesh& mesh = membrane.mesh();
+  const Index n = mesh.numVertices();
+  std::vector<CopyEnergies> out(s.species.size());
+  std::vector<double> curvature;  // per vertex, 1/nm, once a species senses it
+  for (std::size_t j = 0; j < s.species.size(); ++j) {
+    const SurfaceSpeciesConfig& c = s.configs[j];
+    if (!c.potential && !c.curvature) continue;
+    std::vector<double>& arrive = out[j].arrive;
+    arrive.assign(static_cast<std::size_t>(n), 0.0);
+    if (c.potential)
+      for (Index v = 0; v < n; ++v) arrive[v] = surfacePotential(*c.potential, mesh.positions()[v]);
+    out[j].leave = arrive;
+    if (!c.curvature) continue;
+    const double kappa_lipid = membrane.mechanics().bending.modulus.at(t);
+    const double lipid_curvature = membrane.mechanics().bending.spontaneous_curvature.at(t);
+    if (!(kappa_lipid > 0.0))
+      throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature sensing "
+                                 "needs it > 0", t, membrane.name(), kappa_lipid));
+    if (curvature.empty())
+      curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
+                                      membrane.mechanics().bending.estimator);
+    const std::vector<int>& copies = membrane.speciesCopies()[j];
+    for (Index v = 0; v < n; ++v) {
+      const auto energy = [&](int others) {
+        return curvatureSensingEnergy(*c.curvature, kappa_lipid, lipid_curvature, curvature[v], others, cells.size[v]) /
+               thermal_energy_;
+      };
+      arrive[v] += energy(copies[v]);
+      out[j].leave[v] += energy(std::max(copies[v] - 1, 0));
+    }
+  }
+  return out;
+}
+
+void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::vector<CopyEnergies>& energies,
+                                                 Index vertices, double t) const {
+  const Index start = engine_.regionStart(surface + 1);
+  for (const Unbinding& u : unbinding_) {
+    if (u.surface != surface) continue;
+    for (Index v = 0; v < vertices; ++v) {
+      double exponent = 0.0;
+      for (const auto& [j, count] : u.reactants) exponent += count * energies[j].leave[v];
+      // e^700 is near the largest double: a copy that bound so firmly would unbind at
+      // more than 1e300 /s.
+      if (!(exponent < 700.0))
+        throw RunError(fmt::format("t = {:.6g} s: membrane species energy {:.3g} k_BT at a vertex: unbinding at "
+                                   "r e^(beta V) overflows; check the potential and curvature parameters",
+                                   t, exponent));
+      factors_.set(u.reaction, start + v, std::exp(exponent));
     }
   }
 }

@@ -62,11 +62,23 @@ class SurfaceSpeciesFeedback final : public Feedback {
     std::vector<Index> species;  // model indices, in the membrane's species order
     std::vector<SurfaceSpeciesConfig> configs;  // likewise
   };
+  // Energies (k_BT) per vertex of a copy arriving there and of one already there leaving:
+  // equal for an external potential; curvature sensing's V_H counts the vertex's n copies
+  // for an arriving one and n − 1 for a leaving one (sim/surface_drift.hpp). Empty for a
+  // species that feels neither.
+  struct CopyEnergies {
+    std::vector<double> arrive, leave;
+  };
   struct Unbinding {
     Index reaction;  // model index
     Index surface;
     std::vector<std::pair<Index, int>> reactants;  // (index in Surface::species, count) with a potential
   };
+  std::vector<CopyEnergies> copyEnergies(const Surface& s, const Membrane& membrane, const SubvolumeGraph& cells,
+                                         double t) const;
+  // Throws RunError when a factor e^{βV} would overflow.
+  void setUnbindingFactors(Index surface, const std::vector<CopyEnergies>& energies, Index vertices, double t) const;
+
   CompartmentGrid grid_;
   ChemistryEngine& engine_;
   Index species_count_;
