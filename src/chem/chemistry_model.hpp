@@ -22,6 +22,10 @@ struct SpeciesDef {
   std::string name;
   double diffusion = 0.0;  // nm^2/s
   Index surface = -1;      // -1: a 3D species; k: lives on ChemistryModel::surfaces[k]
+  // Surface species only: the area one copy covers (nm^2). A subvolume of area A then
+  // holds at most floor(A / footprint) copies (the crowding cap n <= n0 of thesis 3.2.1):
+  // hops into a full one and reactions that would overfill it are void events. 0: no cap.
+  double footprint = 0.0;
 };
 
 // The side of a closed membrane a species is confined to (thesis 2.2.4.2); an empty

@@ -88,7 +88,7 @@ void DirectMethodEngine::fire(std::size_t channel) {
   const std::size_t reaction_channels = static_cast<std::size_t>(N_) * R_;
   if (channel < reaction_channels) {
     const Index i = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
-    if (!hookAccepts(r, i)) return;  // void event (thinning): nothing changes
+    if (!capAccepts(r, i) || !hookAccepts(r, i)) return;  // void event (thinning): nothing changes
     for (const SpeciesChange& change : net_.changes[r]) {
       const Index at = change.held ? holder_[i] : i;
       int& n = copies_[static_cast<std::size_t>(at) * S_ + change.species];
@@ -103,6 +103,7 @@ void DirectMethodEngine::fire(std::size_t channel) {
     const auto e = static_cast<Index>(hop / S_);
     const auto s = static_cast<Index>(hop % S_);
     const Index from = edge_source_[e], to = edge_target_[e];
+    if (crowded(to, s, 1)) return;  // into a full subvolume: a void event
     --copies_[static_cast<std::size_t>(from) * S_ + s];
     ++copies_[static_cast<std::size_t>(to) * S_ + s];
     ++diffusion_events_;

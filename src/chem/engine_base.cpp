@@ -97,6 +97,14 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
     held_.values.insert(held_.values.end(), row.begin(), row.end());
     held_.endRow();
   }
+  cap_.clear();
+  for (Index s = 0; s < S_; ++s) {
+    if (!(species_[s].footprint > 0.0)) continue;
+    if (cap_.empty()) cap_.assign(static_cast<std::size_t>(n) * S_, -1);
+    const Index k = net_.speciesRegion[s];
+    for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i)
+      cap_[static_cast<std::size_t>(i) * S_ + s] = static_cast<int>(std::floor(size_[i] / species_[s].footprint));
+  }
   diffusing_.assign(regions, {});
   for (Index s = 0; s < S_; ++s)
     if (species_[s].diffusion > 0.0) diffusing_[net_.speciesRegion[s]].push_back(s);
@@ -311,6 +319,13 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
     if (net_.speciesRegion[s] == region) drift_[s].clear();
   layOut(region, copies);
   relaidOut();
+}
+
+bool EngineBase::capAccepts(Index r, Index i) const {
+  if (cap_.empty()) return true;
+  for (const SpeciesChange& change : net_.changes[r])
+    if (!change.held && change.delta > 0 && crowded(i, change.species, change.delta)) return false;
+  return true;
 }
 
 void EngineBase::setSurfaceDrift(Index species, const std::vector<double>& factors) {

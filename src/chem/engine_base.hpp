@@ -67,6 +67,16 @@ class EngineBase : public ChemistryEngine {
 
   // Lets reaction r's hook carry it out in subvolume i; false: the event is void.
   bool hookAccepts(Index r, Index i) { return !hooks_[r] || hooks_[r]->fired(r, i, *this, rng_); }
+  // The crowding cap (SpeciesDef::footprint): whether `delta` more copies of s would
+  // overfill subvolume i, and whether reaction r may fire in i without overfilling it. A
+  // hop or reaction refused here is a void event: its propensity is an upper bound of the
+  // true one and this the exact thinning.
+  bool crowded(Index i, Index s, int delta) const {
+    if (cap_.empty()) return false;
+    const std::size_t k = static_cast<std::size_t>(i) * S_ + s;
+    return cap_[k] >= 0 && copies_[k] + delta > cap_[k];
+  }
+  bool capAccepts(Index r, Index i) const;
 
   // Propensity constant of reaction r in subvolume i (0 outside r's region), before its
   // rate factor and confinement scale.
@@ -152,6 +162,9 @@ class EngineBase : public ChemistryEngine {
   // Per species: hop-rate factors along its surface's edges (region-local edge order),
   // empty for none (setSurfaceDrift).
   std::vector<std::vector<double>> drift_;
+  // Per (subvolume, species): the most copies it may hold, −1 for none; empty when no
+  // species has a footprint.
+  std::vector<int> cap_;
 };
 
 }  // namespace cortex

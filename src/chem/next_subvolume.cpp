@@ -170,15 +170,18 @@ void NextSubvolumeEngine::fire(Index i, double t) {
   bool fired = false;
   if (x < reactions) {
     r = pickReaction(i, x);
-    // A hooked reaction its hook refuses is a void event (thinning): nothing changes.
-    if (r >= 0 && hookAccepts(r, i)) {
+    // A reaction that would overfill a crowded subvolume, or that its hook refuses, is a
+    // void event (thinning): nothing changes.
+    if (r >= 0 && capAccepts(r, i) && hookAccepts(r, i)) {
       react(i, r);
       ++reaction_events_[r];
       fired = true;
     }
   } else {
-    fired = hop(i, x - reactions);
+    const HopOutcome h = hop(i, x - reactions);
+    fired = h == HopOutcome::kMoved;
     if (fired) ++diffusion_events_;
+    if (h == HopOutcome::kCrowded) r = kCrowdedHop;  // a void event, not a miss
   }
   firing_ = -1;
   // A miss (no channel picked) means rounding in the incremental sums put x past the last
@@ -186,7 +189,7 @@ void NextSubvolumeEngine::fire(Index i, double t) {
   // the excess.
   if (fired)
     ++events_;
-  else if (x >= reactions || r < 0)
+  else if (r != kCrowdedHop && (x >= reactions || r < 0))
     refresh(i);
   reschedule(i, t);
 }
@@ -242,7 +245,7 @@ void NextSubvolumeEngine::react(Index i, Index r) {
 
 // x in [0, diffusion of i) picks the species by its share and, with what is left of it,
 // the edge: one uniform number serves both choices.
-bool NextSubvolumeEngine::hop(Index i, double x) {
+NextSubvolumeEngine::HopOutcome NextSubvolumeEngine::hop(Index i, double x) {
   const Subvolume& v = sub_[i];
   const int* n = &copies_[static_cast<std::size_t>(i) * S_];
   Index s = -1;
@@ -255,7 +258,7 @@ bool NextSubvolumeEngine::hop(Index i, double x) {
     }
     x -= w;
   }
-  if (s < 0) return false;
+  if (s < 0) return HopOutcome::kMissed;
   Index dest;
   if (!weighted(s)) {
     dest = neighbour(i, v, std::min(static_cast<Index>(x / w * v.degree), static_cast<Index>(v.degree) - 1));
@@ -270,13 +273,14 @@ bool NextSubvolumeEngine::hop(Index i, double x) {
       if (y < rate) break;
       y -= rate;
     }
-    if (edge < 0) return false;
+    if (edge < 0) return HopOutcome::kMissed;
     dest = edge_target_[edge];
   }
+  if (crowded(dest, s, 1)) return HopOutcome::kCrowded;
 
   changeCopies(i, s, -1);
   changeSubvolume(dest, [&] { changeCopies(dest, s, +1); });
-  return true;
+  return HopOutcome::kMoved;
 }
 
 // i is the subvolume that fired, still at the top of the heap.

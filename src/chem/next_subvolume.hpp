@@ -66,7 +66,11 @@ class NextSubvolumeEngine final : public EngineBase {
   void fire(Index i, double t);
   Index pickReaction(Index i, double x) const;
   void react(Index i, Index r);
-  bool hop(Index i, double x);
+  // kMissed: rounding put x past the last channel; kCrowded: the destination is full
+  // (SpeciesDef::footprint), a void event.
+  enum class HopOutcome { kMoved, kCrowded, kMissed };
+  static constexpr Index kCrowdedHop = -2;  // fire()'s marker of a crowded hop
+  HopOutcome hop(Index i, double x);
   void reschedule(Index i, double t);
   // Applies `change` to subvolume i's propensities; during an advance, a subvolume other
   // than the one firing keeps its pending time, rescaled to the new propensity (Gibson &

@@ -91,7 +91,7 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
           root.fail("membrane", fmt::format("species \"{}\" of membrane \"{}\" has the name of another species; "
                                             "species names must be unique across [[species]] and every membrane",
                                             s.name, m.name));
-      c.species.push_back(SpeciesDef{s.name, s.diffusion, surface});
+      c.species.push_back(SpeciesDef{s.name, s.diffusion, surface, s.footprint});
       c.initial_copies.push_back(0);
       c.sides.emplace_back();
     }

@@ -44,6 +44,7 @@ SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   s.copies = r.integer("copies", 0, 0, 2'000'000'000);
   if (r.has("density")) s.density = r.requiredNumber("density", Range::nonNegative(), "copies/µm^2");
   s.region = readBoxRegion(r, "region");
+  s.footprint = r.number("footprint", 0.0, Range::nonNegative(), "nm^2");
   if (const auto p = r.table("potential")) s.potential = readPotential(*p);
   if (const auto c = r.table("curvature")) s.curvature = readCurvature(*c);
   s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear

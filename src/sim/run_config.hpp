@@ -78,6 +78,9 @@ struct SurfaceSpeciesConfig {
   std::int64_t copies = 0;
   std::optional<double> density;
   std::optional<BoxRegion> region;
+  // nm^2 one copy covers: a vertex holds at most floor(|C_j| / footprint) copies (the
+  // crowding cap, SpeciesDef::footprint); 0: no cap.
+  double footprint = 0.0;
   std::optional<SurfacePotentialConfig> potential;
   std::optional<CurvatureSensingConfig> curvature;
   DriftScheme drift = DriftScheme::kExponential;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -55,13 +56,28 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
         count = std::llround(expected);
       }
+      // With a footprint, a vertex holds at most floor(|C_j| / footprint) copies: draws
+      // onto a full vertex are drawn again.
+      std::vector<int> cap(static_cast<std::size_t>(n), std::numeric_limits<int>::max());
+      if (s.footprint > 0.0) {
+        double room = 0.0;
+        for (Index v = 0; v < n; ++v) {
+          cap[v] = static_cast<int>(std::floor(area[v] / s.footprint));
+          if (cumulative[v] > (v > 0 ? cumulative[v - 1] : 0.0)) room += cap[v];
+        }
+        if (static_cast<double>(count) > 0.99 * room)
+          throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
+                                       "(keep them under 99% full)", where, count, room, s.footprint));
+      }
       std::vector<int> c(static_cast<std::size_t>(n), 0);
-      for (std::int64_t k = 0; k < count; ++k) {
+      for (std::int64_t k = 0; k < count;) {
         const double target = random.uniform() * sum;
         auto v = static_cast<Index>(std::upper_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
         v = std::min<Index>(v, n - 1);
         while (v > 0 && cumulative[v] == cumulative[v - 1]) --v;  // a vertex of weight 0 (outside the region)
+        if (c[v] >= cap[v]) continue;
         ++c[v];
+        ++k;
       }
       names.push_back(s.name);
       copies.push_back(std::move(c));
