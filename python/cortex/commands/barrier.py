@@ -9,11 +9,9 @@ and the time the fraction first reaches 1 - 1/e; -o plots every run on one axis.
   barrier OUT --species M --split 750 --csv barrier.csv
 """
 
-import os
 
 import numpy as np
 
-from .. import plotting
 from ..errors import CortexError
 from . import common
 
@@ -76,8 +74,7 @@ def crossing_time(rows, level=1.0 - np.exp(-1.0)):
 
 
 def run(args):
-    labels = (common.split_labels(args.labels, len(args.outdir), "runs") if args.labels
-              else [os.path.basename(os.path.normpath(d)) for d in args.outdir])
+    labels = common.run_labels(args)
     tables = []
     for label, outdir in zip(labels, args.outdir):
         rows, name, species, split = table(outdir, args.membrane, args.species, args.split)
@@ -90,29 +87,11 @@ def run(args):
         print(f"{label}: fraction {rows[-1, 1]:.3f} at t = {rows[-1, 0]:g} s; reaches 1 - 1/e at "
               + (f"t = {t_e:g} s" if np.isfinite(t_e) else "no snapshot"))
     if args.csv:
-        try:
-            with open(args.csv, "w") as fh:
-                fh.write(",".join(["run"] + COLUMNS) + "\n")
-                for label, rows in zip(labels, tables):
-                    for row in rows:
-                        fh.write(",".join([label] + [repr(float(v)) for v in row]) + "\n")
-        except OSError as e:
-            raise CortexError(f"{args.csv}: cannot write ({e.strerror})") from None
+        common.write_tables_csv(args.csv, COLUMNS, labels, tables)
     if args.out:
-        plt = plotting.pyplot()
-        fig, ax = plt.subplots(figsize=args.size)
-        for i, (label, rows) in enumerate(zip(labels, tables)):
-            ax.plot(rows[:, 0], rows[:, 1], "-", color=f"C{i}", label=label)
-        ax.axhline(1.0, color="0.6", lw=0.8, ls="--")
-        ax.set_xlabel("time (s)")
-        ax.set_ylabel("past the barrier / equilibrium")
-        ax.set_ylim(0.0, 1.1)
-        ax.grid(alpha=0.3)
-        if len(tables) > 1:
-            ax.legend(fontsize=8)
-        if args.title:
-            ax.set_title(args.title)
-        fig.tight_layout()
-        plotting.save(fig, args.out, args.dpi)
-        common.wrote(args.out)
+        def decorate(ax):
+            ax.axhline(1.0, color="0.6", lw=0.8, ls="--")
+            ax.set_ylim(0.0, 1.1)
+
+        common.plot_over_time(args, labels, tables, "past the barrier / equilibrium", decorate)
     return 0

@@ -3,6 +3,7 @@
 import argparse
 import os
 
+from .. import plotting
 from ..errors import CortexError
 from ..run import Run
 
@@ -106,6 +107,48 @@ def split_labels(spec, count, what):
     if len(labels) != count:
         raise CortexError(f"--labels has {len(labels)} entries for {count} {what}")
     return labels
+
+
+def run_labels(args):
+    """A caption per run folder: --labels, else each folder's name."""
+    if args.labels:
+        return split_labels(args.labels, len(args.outdir), "runs")
+    return [os.path.basename(os.path.normpath(d)) for d in args.outdir]
+
+
+def write_tables_csv(path, columns, labels, tables, formats=None):
+    """Per-run tables as one CSV: a run column, then `columns`; values as repr(float)
+    unless `formats` gives a function per column."""
+    formats = formats or [lambda v: repr(float(v))] * len(columns)
+    try:
+        with open(path, "w") as fh:
+            fh.write(",".join(["run"] + columns) + "\n")
+            for label, rows in zip(labels, tables):
+                for row in rows:
+                    fh.write(",".join([label] + [f(v) for f, v in zip(formats, row)]) + "\n")
+    except OSError as e:
+        raise CortexError(f"{path}: cannot write ({e.strerror})") from None
+
+
+def plot_over_time(args, labels, tables, ylabel, decorate=None):
+    """Column 1 of every run's table against its time column 0, one line per run, to
+    args.out; `decorate(ax)` adds what a command needs beyond that."""
+    plt = plotting.pyplot()
+    fig, ax = plt.subplots(figsize=args.size)
+    for i, (label, rows) in enumerate(zip(labels, tables)):
+        ax.plot(rows[:, 0], rows[:, 1], "-", color=f"C{i}", label=label)
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel(ylabel)
+    if decorate:
+        decorate(ax)
+    ax.grid(alpha=0.3)
+    if len(tables) > 1:
+        ax.legend(fontsize=8)
+    if args.title:
+        ax.set_title(args.title)
+    fig.tight_layout()
+    plotting.save(fig, args.out, args.dpi)
+    wrote(args.out)
 
 
 def wrote(path):

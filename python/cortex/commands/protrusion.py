@@ -10,11 +10,9 @@ of every run on one axis.
   protrusion OUT --membrane patch --csv height.csv
 """
 
-import os
 
 import numpy as np
 
-from .. import plotting
 from ..errors import CortexError
 from . import common
 
@@ -74,8 +72,7 @@ def growth_rate(rows):
 
 
 def run(args):
-    labels = (common.split_labels(args.labels, len(args.outdir), "runs") if args.labels
-              else [os.path.basename(os.path.normpath(d)) for d in args.outdir])
+    labels = common.run_labels(args)
     tables = []
     for label, outdir in zip(labels, args.outdir):
         rows, name = table(outdir, args.membrane)
@@ -87,27 +84,7 @@ def run(args):
         print(f"{label}: height {rows[0, 1]:.1f} -> {rows[-1, 1]:.1f} nm, growth rate over the second half "
               f"{growth_rate(rows):.1f} nm/s")
     if args.csv:
-        try:
-            with open(args.csv, "w") as fh:
-                fh.write(",".join(["run"] + COLUMNS) + "\n")
-                for label, rows in zip(labels, tables):
-                    for row in rows:
-                        fh.write(",".join([label] + [repr(float(v)) for v in row]) + "\n")
-        except OSError as e:
-            raise CortexError(f"{args.csv}: cannot write ({e.strerror})") from None
+        common.write_tables_csv(args.csv, COLUMNS, labels, tables)
     if args.out:
-        plt = plotting.pyplot()
-        fig, ax = plt.subplots(figsize=args.size)
-        for i, (label, rows) in enumerate(zip(labels, tables)):
-            ax.plot(rows[:, 0], rows[:, 1], "-", color=f"C{i}", label=label)
-        ax.set_xlabel("time (s)")
-        ax.set_ylabel("largest membrane height (nm)")
-        ax.grid(alpha=0.3)
-        if len(tables) > 1:
-            ax.legend(fontsize=8)
-        if args.title:
-            ax.set_title(args.title)
-        fig.tight_layout()
-        plotting.save(fig, args.out, args.dpi)
-        common.wrote(args.out)
+        common.plot_over_time(args, labels, tables, "largest membrane height (nm)")
     return 0

@@ -12,7 +12,6 @@ change; -o plots Rg(t) of every run on one axis (--bound adds the bound counts).
   rg OUT --normalize --type 0 --csv rg.csv
 """
 
-import os
 
 import numpy as np
 
@@ -72,15 +71,9 @@ def print_table(label, rows, quiet):
 
 
 def write_csv(path, labels, tables):
-    try:
-        with open(path, "w") as fh:
-            fh.write(",".join(["run"] + COLUMNS) + "\n")
-            for label, rows in zip(labels, tables):
-                for row in rows:
-                    fh.write(",".join([label] + [repr(float(v)) for v in row[:3]]
-                                      + [str(int(v)) for v in row[3:]]) + "\n")
-    except OSError as e:
-        raise CortexError(f"{path}: cannot write ({e.strerror})") from None
+    """Times, Rg and Rg/Rg(0) as floats, the counts as integers."""
+    as_float, as_int = (lambda v: repr(float(v))), (lambda v: str(int(v)))
+    common.write_tables_csv(path, COLUMNS, labels, tables, [as_float] * 3 + [as_int] * (len(COLUMNS) - 3))
 
 
 def plot(args, labels, tables):
@@ -114,8 +107,7 @@ def plot(args, labels, tables):
 
 
 def run(args):
-    labels = (common.split_labels(args.labels, len(args.outdir), "runs") if args.labels
-              else [os.path.basename(os.path.normpath(d)) for d in args.outdir])
+    labels = common.run_labels(args)
     tables = [table(d, args.type, args.per_length) for d in args.outdir]
     for label, rows in zip(labels, tables):
         print_table(label, rows, args.quiet)
