@@ -24,8 +24,6 @@ double BendingEnergy::evaluate(const Evaluation& e) {
   const MeshGeometry& g = membrane_.geometry(e);
   const std::optional<ProteinCoat>& coat = membrane_.coat();
   const std::vector<int>* coat_copies = coat ? &membrane_.speciesCopies()[coat->species] : nullptr;
-  const double kappa_both = coat ? kappa_ + coat->bending_modulus : 0.0;
-  const double coat_h0 = coat ? coat->spontaneous_curvature * coat->bending_modulus / kappa_both : 0.0;
   const MeshTopology& topo = membrane_.topology();
   const CurvatureEstimator estimator = p_.estimator;
   const Index nv = topo.numVertices();
@@ -51,15 +49,11 @@ double BendingEnergy::evaluate(const Evaluation& e) {
     if (coat && (*coat_copies)[v] > 0) {
       const double raw = (*coat_copies)[v] * coat->area / g.vertex_area[v];
       const double phi = std::min(raw, 1.0);
-      const double g_phi = (1.0 - phi) / kappa_ + phi / kappa_both;
-      kappa = 1.0 / g_phi;
-      dh -= coat_h0 * phi;
-      const double density = 2.0 * kappa * dh * dh;
-      // e'(phi) = 2 kappa' dh^2 - 4 kappa dh H_c, kappa' = kappa^2 (1/kappa_l - 1/(kappa_l + kappa_p)).
-      const double de = raw < 1.0 ? 2.0 * kappa * kappa * (1.0 / kappa_ - 1.0 / kappa_both) * dh * dh -
-                                        4.0 * kappa * dh * coat_h0
-                                  : 0.0;
-      area_coefficient = density - phi * de;
+      const CoatedLipid lipid = coatedLipid(kappa_, coat->bending_modulus, coat->spontaneous_curvature, dh, phi);
+      kappa = lipid.kappa;
+      dh = lipid.offset;
+      // phi capped at 1 no longer follows A_v.
+      area_coefficient = lipid.density - (raw < 1.0 ? phi * lipid.derivative : 0.0);
     } else {
       area_coefficient = 2.0 * kappa * dh * dh;
     }

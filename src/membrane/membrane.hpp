@@ -14,6 +14,7 @@
 #include "membrane/curvature.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/mesh_topology.hpp"
+#include "membrane/protein_coat.hpp"
 #include "mesh/remesh.hpp"
 #include "mesh/surface_mesh.hpp"
 
@@ -76,18 +77,6 @@ struct MembraneEquilibrium {
   double tension = std::numeric_limits<double>::quiet_NaN();   // pN/nm, of the exact area
   double pressure = std::numeric_limits<double>::quiet_NaN();  // pN/nm^2, p_in - p_out, of the exact volume
   double strain_since_remesh = 0.0;
-};
-
-// Curvature generation (thesis 3.2.5, eqs. 3.18–3.19): a membrane species whose copies
-// coat the lipid. At a vertex with n copies over its area A_v the covered fraction is
-// φ = min(n a / A_v, 1), and the bending energy there becomes 2 κ(φ) (H − H₀ − H_c φ)² A_v
-// with κ(φ) = ((1 − φ)/κ + φ/(κ + κ_p))⁻¹ and H_c = H_p κ_p / (κ + κ_p), κ and H₀ the
-// membrane's own (bending_energy.hpp).
-struct ProteinCoat {
-  Index species = 0;             // index into Membrane::speciesCopies()
-  double area = 0.0;             // nm^2 per copy, a
-  double bending_modulus = 0.0;  // pN nm, κ_p
-  double spontaneous_curvature = 0.0;  // 1/nm, H_p
 };
 
 // Reference state fixed when the membrane is created (and restored from checkpoints).

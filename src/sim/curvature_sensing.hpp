@@ -1,11 +1,8 @@
-// Curvature sensing of membrane proteins (thesis 3.2.5, eqs. 3.17–3.19): the bending
-// energy density of a membrane patch whose area fraction φ is covered by proteins,
-//   e(φ) = 2 κ(φ) (H − H_l − H₀ φ)²,  κ(φ) = ((1 − φ)/κ_l + φ/(κ_l + κ_p))⁻¹,
-//   H₀ = H_p κ_p / (κ_l + κ_p),
-// (H_l the lipid's own spontaneous curvature, 0 in the thesis; the same e as the
-// membrane's bending energy under a protein coat, membrane/bending_energy.hpp),
-// and the energy of one protein in the dual cell of area |C| around a vertex of mean
-// curvature H that holds n other copies: its chemical potential
+// Curvature sensing of membrane proteins (thesis 3.2.5, eqs. 3.17–3.19): with e(φ) the
+// bending energy density of lipid whose area fraction φ proteins cover
+// (membrane/protein_coat.hpp; H₀ below is its H_c), the energy of one protein in the
+// dual cell of area |C| around a vertex of mean curvature H that holds n other copies:
+// its chemical potential
 //   V_H = A_p ∂e/∂φ at φ = n A_p / |C|,
 // the form the thesis gives for crowded cells. In the dilute limit it is the closed form
 // 2 A_p κ_eff (H² − 2 H H_p), κ_eff = κ_l κ_p / (κ_l + κ_p), on any mesh. The thesis'

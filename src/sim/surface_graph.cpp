@@ -6,18 +6,23 @@
 
 namespace cortex {
 
-DualCellGraph dualCellGraph(const SurfaceMesh& mesh) {
+std::vector<double> dualCellAreas(const SurfaceMesh& mesh) {
   const auto& x = mesh.positions();
+  std::vector<double> area(static_cast<std::size_t>(mesh.numVertices()), 0.0);
+  for (Index f = 0; f < mesh.numFaces(); ++f) {
+    if (mesh.isDeletedFace(f)) throw std::logic_error("dualCellAreas: the mesh has deleted faces (garbageCollect first)");
+    const Tri t = mesh.faceVertices(f);
+    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
+    for (Index v : t) area[v] += third;
+  }
+  return area;
+}
+
+DualCellGraph dualCellGraph(const SurfaceMesh& mesh) {
   const Index n = mesh.numVertices();
   DualCellGraph out;
   SubvolumeGraph& g = out.graph;
-  g.size.assign(static_cast<std::size_t>(n), 0.0);
-  for (Index f = 0; f < mesh.numFaces(); ++f) {
-    if (mesh.isDeletedFace(f)) throw std::logic_error("dualCellGraph: the mesh has deleted faces (garbageCollect first)");
-    const Tri t = mesh.faceVertices(f);
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
-    for (Index v : t) g.size[v] += third;
-  }
+  g.size = dualCellAreas(mesh);
   g.start.clear();
   g.start.push_back(0);
   for (Index v = 0; v < n; ++v) {

@@ -27,4 +27,7 @@ struct DualCellGraph {
 // `mesh` must be compacted (no deleted elements, as after garbageCollect()).
 DualCellGraph dualCellGraph(const SurfaceMesh& mesh);
 
+// The dual-cell areas |C_j| (nm^2) alone: dualCellGraph(mesh).graph.size.
+std::vector<double> dualCellAreas(const SurfaceMesh& mesh);
+
 }  // namespace cortex

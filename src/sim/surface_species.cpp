@@ -15,21 +15,6 @@
 #include "sim/system.hpp"
 
 namespace cortex {
-namespace {
-
-// Dual-cell areas |C_j| = one third of the triangles around j (nm^2).
-std::vector<double> dualCellAreas(const SurfaceMesh& mesh) {
-  std::vector<double> area(static_cast<std::size_t>(mesh.numVertices()), 0.0);
-  const auto& x = mesh.positions();
-  for (const Tri& t : mesh.triangles()) {
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
-    for (Index v : t) area[v] += third;
-  }
-  return area;
-}
-
-}  // namespace
-
 void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector<std::unique_ptr<Membrane>>& membranes,
                          std::uint64_t seed, const std::string& source) {
   RandomStream random(seed, StreamId::kSurfaceSpeciesPlacement);
@@ -43,11 +28,12 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
     for (const SurfaceSpeciesConfig& s : mc.species) {
       const std::string where = fmt::format("{}: membrane \"{}\", species \"{}\"", source, mc.name, s.name);
       // Weights: the dual-cell areas of the vertices where copies may start.
+      std::vector<char> inside(static_cast<std::size_t>(n));
       std::vector<double> cumulative(static_cast<std::size_t>(n));
       double sum = 0.0;
       for (Index v = 0; v < n; ++v) {
-        const bool in = !s.region || s.region->contains(membrane.mesh().positions()[v]);
-        cumulative[v] = sum += in ? area[v] : 0.0;
+        inside[v] = !s.region || s.region->contains(membrane.mesh().positions()[v]);
+        cumulative[v] = sum += inside[v] ? area[v] : 0.0;
       }
       if (!(sum > 0.0)) throw InputError(fmt::format("{}: region holds no vertex of the membrane", where));
       std::int64_t count = s.copies;
@@ -56,14 +42,14 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
         count = std::llround(expected);
       }
-      // With a footprint, a vertex holds at most floor(|C_j| / footprint) copies: draws
-      // onto a full vertex are drawn again.
+      // With a footprint, a vertex holds at most floor(|C_j| / footprint) copies, as the
+      // engine counts them (SpeciesDef::footprint): draws onto a full vertex are drawn again.
       std::vector<int> cap(static_cast<std::size_t>(n), std::numeric_limits<int>::max());
       if (s.footprint > 0.0) {
         double room = 0.0;
         for (Index v = 0; v < n; ++v) {
           cap[v] = static_cast<int>(std::floor(area[v] / s.footprint));
-          if (cumulative[v] > (v > 0 ? cumulative[v - 1] : 0.0)) room += cap[v];
+          if (inside[v]) room += cap[v];
         }
         if (static_cast<double>(count) > 0.99 * room)
           throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
@@ -100,10 +86,6 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
     Surface s{-1, {}, {}};
     for (std::size_t m = 0; m < membranes.size(); ++m)
       if (membranes[m]->name() == name) s.membrane = static_cast<Index>(m), s.configs = membrane_configs[m].species;
-    for (const SurfaceSpeciesConfig& c : s.configs)
-      if (c.curvature && !(membranes[s.membrane]->mechanics().bending.modulus.at(0.0) > 0.0))
-        throw InputError(fmt::format("membrane \"{}\": species \"{}\" senses curvature, which needs a "
-                                     "bending_modulus > 0 (the lipid's κ in eq. 3.19)", name, c.name));
     const auto k = static_cast<Index>(surfaces_.size());
     for (Index sp = 0; sp < species_count_; ++sp)
       if (config.species[sp].surface == k) s.species.push_back(sp);

@@ -29,8 +29,7 @@ class SurfaceSpeciesFeedback final : public Feedback {
   // `config_factors`: the rate factors of the config's reactions (numbered model-wide
   // from config_factors.range().begin), of which this writes those of unbinding
   // reactions on the vertices.
-  // `thermal_energy` k_BT (pN nm). Throws InputError for curvature sensing on a
-  // membrane without bending rigidity.
+  // `thermal_energy` k_BT (pN nm).
   SurfaceSpeciesFeedback(const ChemistryConfig& config, const std::vector<MembraneConfig>& membrane_configs,
                          ChemistryEngine& engine, const std::vector<std::unique_ptr<Membrane>>& membranes,
                          RateFactors config_factors, double thermal_energy);

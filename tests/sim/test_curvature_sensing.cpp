@@ -20,6 +20,7 @@
 #include "io/config.hpp"
 #include "membrane/curvature.hpp"
 #include "sim/curvature_sensing.hpp"
+#include "sim/surface_graph.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -88,11 +89,7 @@ PoleRatio poleToWaist(bool sensing) {
   const auto& x = m.mesh().positions();
   const Index n = m.mesh().numVertices();
   const std::vector<double> H = vertexMeanCurvature(m.currentGeometry(), m.topology(), CurvatureEstimator::kSigned);
-  std::vector<double> cell(static_cast<std::size_t>(n), 0.0);
-  for (const Tri& t : m.topology().triangles) {
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
-    for (Index v : t) cell[v] += third;
-  }
+  const std::vector<double> cell = dualCellAreas(m.mesh());
   const double kT = constants::kBoltzmann * config.simulation.temperature;
   // Region 0: poles, 1: waist, -1: neither.
   std::vector<int> region(static_cast<std::size_t>(n), -1);

@@ -24,6 +24,7 @@
 #include "sim/confinement.hpp"
 #include "sim/simulation.hpp"
 #include "sim/surface_drift.hpp"
+#include "sim/surface_graph.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -70,11 +71,10 @@ height = 1.5)";
 // Σ_j |C_j| e^{−βV_j}: the membrane's area weighted by the potential of its species.
 double boltzmannArea(const Membrane& m, const std::optional<SurfacePotentialConfig>& potential) {
   const auto& x = m.mesh().positions();
+  const std::vector<double> cell = dualCellAreas(m.mesh());
   double a = 0.0;
-  for (const Tri& t : m.topology().triangles) {
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
-    for (Index v : t) a += third * (potential ? std::exp(-surfacePotential(*potential, x[v])) : 1.0);
-  }
+  for (Index v = 0; v < m.mesh().numVertices(); ++v)
+    a += cell[v] * (potential ? std::exp(-surfacePotential(*potential, x[v])) : 1.0);
   return a;
 }
 
