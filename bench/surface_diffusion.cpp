@@ -3,16 +3,20 @@
 // ≈ 75 nm, D = 1 µm²/s, ~700 hops/s per copy), 10 copies per vertex, through the
 // next-subvolume engine, one advance of 10 ms per iteration (≥ 7·10⁵ events). Beside it
 // the 3D engine's figure on the 50³ grid is in bench_chemistry. Target ≥ 5·10⁶ /s.
+// BM_SurfaceDiffusionInteracting: the same copies with a weak Gaussian pair attraction
+// (h = 0.01 k_BT, σ = 75 nm: μ₀/|C| ≈ −0.04 k_BT), whose hop rates are recomputed
+// around both ends after every hop (sim/pair_interaction.hpp): the price of exactness.
 #include <benchmark/benchmark.h>
 
 #include "chem/chemistry_engine.hpp"
 #include "mesh/icosphere.hpp"
+#include "sim/pair_interaction.hpp"
 #include "sim/surface_graph.hpp"
 
 namespace cortex {
 namespace {
 
-void BM_SurfaceDiffusion(benchmark::State& state) {
+void runSurfaceDiffusion(benchmark::State& state, bool interacting) {
   const SurfaceMesh mesh = SurfaceMesh::fromSoup(icosphere(Vec3::Zero(), 2000.0, 5), "icosphere");
   ChemistryModel model;
   model.volumes.size = {1e12};
@@ -21,7 +25,11 @@ void BM_SurfaceDiffusion(benchmark::State& state) {
   model.species = {{"P", 1.0e6, 0}};
   auto engine = makeChemistryEngine(EngineKind::kNextSubvolume, model, {0}, 42);
   const auto n = static_cast<std::size_t>(mesh.numVertices());
-  engine->setSurface(0, dualCellGraph(mesh).graph, std::vector<Index>(n, 0), std::vector<int>(n, 10));
+  const SubvolumeGraph graph = dualCellGraph(mesh).graph;
+  engine->setSurface(0, graph, std::vector<Index>(n, 0), std::vector<int>(n, 10));
+  if (interacting)
+    engine->setSurfaceInteraction(0, pairInteraction(graph, gaussianPairMoments(0.01, 75.0), std::vector<double>(n, 0.0),
+                                                     DriftScheme::kExponential));
   const double window = 0.01;
   engine->advance(window);
   const std::int64_t before = engine->events();
@@ -31,7 +39,11 @@ void BM_SurfaceDiffusion(benchmark::State& state) {
   state.counters["events_per_s"] = benchmark::Counter(fired, benchmark::Counter::kIsRate);
   state.counters["events_per_advance"] = fired / static_cast<double>(state.iterations());
 }
+
+void BM_SurfaceDiffusion(benchmark::State& state) { runSurfaceDiffusion(state, false); }
+void BM_SurfaceDiffusionInteracting(benchmark::State& state) { runSurfaceDiffusion(state, true); }
 BENCHMARK(BM_SurfaceDiffusion)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SurfaceDiffusionInteracting)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace cortex

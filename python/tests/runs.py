@@ -283,8 +283,39 @@ equation = "B_large -> C"
 rate = 10.0
 """
 
+# Phase separation (examples/membrane_llps.toml, a quarter of the patch, short): a strong
+# pair attraction (h = 0.4 k_BT) with the crowding cap; 5 snapshots.
+LLPS = """
+[simulation]
+seed = 8
+end_time = 0.05
+chemistry_window = 0.01
+snapshot_interval = 0.01
+
+[[membrane]]
+name = "patch"
+shape = "plane"
+center = [100.0, 100.0, 0.0]
+size = [200.0, 200.0]
+mesh_size = 12.0
+boundary = "fixed"
+bending_modulus = 100.0
+area_model = "none"
+
+[[membrane.species]]
+name = "P"
+diffusion = 1.0e6
+copies = 375
+footprint = 19.6
+interaction = { height = 0.4, range = 18.0 }
+
+[compartments]
+size = 300.0
+shape = [1, 1, 1]
+"""
+
 CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE,
-           "barrier": BARRIER, "sorting": SORTING}
+           "barrier": BARRIER, "sorting": SORTING, "llps": LLPS}
 
 
 def root():

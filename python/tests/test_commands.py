@@ -14,7 +14,8 @@ from tests.helpers import REPOSITORY, assert_png, command, python
 class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle", "barrier", "sorting")}
+        cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle", "barrier", "sorting",
+                                                  "llps")}
         cls.tmp = tempfile.TemporaryDirectory()
 
     @classmethod
@@ -91,6 +92,28 @@ class CommandsTest(unittest.TestCase):
         code, _, stderr = command("sorting", self.runs["vesicle"])
         self.assertEqual(code, 2)
         self.assertIn("no membrane species", stderr)
+
+    def test_llps(self):
+        p = self.runs["llps"]
+        stdout = self.ok("llps", p, p, "--labels", "a,b", "--from", "0.02", "--csv", self.out("l.csv"),
+                         "-o", self.out("l.png"))
+        assert_png(self, self.out("l.png"))
+        rows = {line.split()[0]: line.split() for line in stdout.splitlines() if line.split()[:1] in (["a"], ["b"])}
+        # h read from the run's config; mean phi = 375 x 19.6 / 200^2; a strong attraction
+        # gathers most copies into dense cells within 0.05 s.
+        self.assertEqual(float(rows["a"][1]), 0.4)
+        self.assertAlmostEqual(float(rows["a"][2]), 375 * 19.6 / 200.0**2, places=2)
+        self.assertGreater(float(rows["a"][4]), 0.5)
+        self.assertEqual(rows["a"][5], "yes")
+        self.assertIn("onset of phase separation: h = 0.4 kT", stdout)
+        with open(self.out("l.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,height_kT,phi,probability")
+        self.assertEqual(len(lines), 1 + 2 * 6)
+        self.assertAlmostEqual(sum(float(line.split(",")[3]) for line in lines[1:7]), 1.0)
+        code, _, stderr = command("llps", self.runs["barrier"])
+        self.assertEqual(code, 2)
+        self.assertIn("no footprint", stderr)
 
     def test_protrusion(self):
         b = self.runs["bundle"]

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "chem/chemistry_model.hpp"
+#include "chem/hop_drift.hpp"
 #include "chem/reaction_hook.hpp"
 #include "core/random.hpp"
 
@@ -127,6 +128,27 @@ class ChemistryEngine {
   // e^{-βh}). setSurface resets the factors to 1. Throws std::invalid_argument for a 3D
   // species, a factor negative or not finite, or a count other than the graph's edges.
   virtual void setSurfaceDrift(Index species, const std::vector<double>& factors) = 0;
+
+  // A surface species whose copies attract or repel each other (thesis eqs. 3.4–3.5):
+  // a copy in subvolume j feels h_j = V_j + R_j, R = K N the field of the other copies
+  // (N per subvolume, K symmetric with the graph's sparsity). A hop i → k then changes the
+  // energy W = Σ V_j N_j + ½ Nᵀ K N − ½ Σ K_jj N_j (pairs, no self-pairs) by
+  //   x = V_k − V_i + R_k − R_i − K_ik + K_ii      (k_BT),
+  // and its rate is the free one times the drift factor of `scheme` (chem/hop_drift.hpp);
+  // the exponential one keeps detailed balance with e^{−W} exactly. Rates are kept exact
+  // event by event: after each hop the field and the hop rates around both ends are
+  // recomputed. The species may not take part in reactions.
+  struct SurfaceInteraction {
+    std::vector<double> potential;  // per subvolume of the surface: V_j
+    std::vector<double> self;       // per subvolume: K_jj
+    std::vector<double> pair;       // per directed edge of the surface's graph: K_jk = K_kj
+    DriftScheme scheme = DriftScheme::kExponential;
+  };
+  // Gives surface species `species` its interaction on the surface's current graph
+  // (setSurface clears it, as it does drift factors). Throws std::invalid_argument for a
+  // 3D species, one that reactions change, sizes other than the graph's, values not
+  // finite, or K not symmetric.
+  virtual void setSurfaceInteraction(Index species, SurfaceInteraction interaction) = 0;
 
   // The total propensity (events/s) at the current copies and rates, and the channel
   // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"").

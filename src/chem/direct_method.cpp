@@ -51,6 +51,8 @@ void DirectMethodEngine::setCopies(Index subvolume, Index species, int n) {
   checkCopies(subvolume, species, n);
   copies_[slot(subvolume, species)] = n;
   touch(subvolume, species);
+  if (interacting(species))
+    for (Index v : interactionChanged(species, subvolume, subvolume)) recompute(v);
 }
 
 void DirectMethodEngine::setRateFactor(Index reaction, Index subvolume, double factor) {
@@ -109,6 +111,8 @@ void DirectMethodEngine::fire(std::size_t channel) {
     ++diffusion_events_;
     touch(from, s);
     touch(to, s);
+    if (interacting(s))
+      for (Index v : interactionChanged(s, from, to)) recompute(v);
   }
   ++events_;
 }

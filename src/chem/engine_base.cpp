@@ -27,7 +27,9 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       hop_rate_(S_, 0.0),
       confined_(S_, 0),
       scale_species_(R_, -1),
-      drift_(S_) {
+      drift_(S_),
+      interaction_(S_),
+      field_(S_) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
   graphs_[0] = model.volumes;
   const Index n0 = model.volumes.count();
@@ -123,7 +125,7 @@ void EngineBase::computeHopRates() {
   bool any_weighted = false;
   for (Index s = 0; s < S_; ++s) {
     const Index k = net_.speciesRegion[s];
-    weighted_[s] = confined_[s] || !uniform[k] || !drift_[s].empty();
+    weighted_[s] = confined_[s] || !uniform[k] || !drift_[s].empty() || interacting(s);
     any_weighted = any_weighted || weighted_[s];
     const auto& l2 = graphs_[k].hop_length2;
     hop_rate_[s] = l2.empty() ? 0.0 : species_[s].diffusion / l2.front();
@@ -136,6 +138,11 @@ void EngineBase::computeHopRates() {
   for (Index s = 0; s < S_; ++s) {
     if (!weighted_[s]) continue;
     const Index k = net_.speciesRegion[s];
+    if (interacting(s)) {
+      for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) field_[s][i - region_start_[k]] = pairField(s, i);
+      for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) computeInteractionRates(s, i);
+      continue;
+    }
     const Index first_edge = edge_start_[region_start_[k]];
     for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) {
       double total = 0.0;
@@ -316,7 +323,11 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
   graphs_[region] = graph;
   holders_[region] = holders;
   for (Index s = 0; s < S_; ++s)
-    if (net_.speciesRegion[s] == region) drift_[s].clear();
+    if (net_.speciesRegion[s] == region) {
+      drift_[s].clear();
+      interaction_[s] = SurfaceInteraction{};
+      field_[s].clear();
+    }
   layOut(region, copies);
   relaidOut();
 }
@@ -332,6 +343,8 @@ void EngineBase::setSurfaceDrift(Index species, const std::vector<double>& facto
   if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
   const Index region = net_.speciesRegion[species];
   if (region == 0) throw std::invalid_argument("chemistry engine: only surface species drift");
+  if (interacting(species))
+    throw std::invalid_argument("chemistry engine: an interacting species drifts through its interaction's potential");
   if (factors.size() != static_cast<std::size_t>(graphs_[region].numEdges()))
     throw std::invalid_argument("chemistry engine: setSurfaceDrift needs one factor per edge of the surface");
   for (double f : factors)

@@ -32,6 +32,7 @@ class EngineBase : public ChemistryEngine {
   void setSurface(Index surface, const SubvolumeGraph& graph, const std::vector<Index>& holders,
                   const std::vector<int>& copies) override;
   void setSurfaceDrift(Index species, const std::vector<double>& factors) override;
+  void setSurfaceInteraction(Index species, SurfaceInteraction interaction) override;
 
  protected:
   // Throws InputError for an invalid model or negative copies, std::invalid_argument
@@ -64,6 +65,14 @@ class EngineBase : public ChemistryEngine {
   virtual void refreshSubvolume(Index i) = 0;
   // The subvolumes were laid out anew (setSurface): resize and recompute everything.
   virtual void relaidOut() = 0;
+
+  // Whether copies of s interact (setSurfaceInteraction).
+  bool interacting(Index s) const { return !interaction_[s].potential.empty(); }
+  // After copies of interacting species s changed in subvolumes a and b (a hop a → b, or
+  // a == b): recomputes the field R around them and the hop rates that read it (each a
+  // pure function of the copies, so a restored engine gets the same numbers). Returns the
+  // subvolumes whose hopOut changed, for the engine to resum.
+  const std::vector<Index>& interactionChanged(Index s, Index a, Index b);
 
   // Lets reaction r's hook carry it out in subvolume i; false: the event is void.
   bool hookAccepts(Index r, Index i) { return !hooks_[r] || hooks_[r]->fired(r, i, *this, rng_); }
@@ -143,6 +152,11 @@ class EngineBase : public ChemistryEngine {
   // `replaced` (whose new copies are `fresh`), and recomputes every hop rate.
   void layOut(Index replaced, const std::vector<int>& fresh);
   void computeHopRates();
+  // Interactions (surface_interaction.cpp): R_i of species s from the copies; the
+  // per-copy rate along edge e out of subvolume i; edge_rate_ and hop_out_ of i.
+  double pairField(Index s, Index i) const;
+  double interactionRate(Index s, Index i, Index e) const;
+  void computeInteractionRates(Index s, Index i);
   // Moves copies of s out of inactive subvolumes; marks the subvolumes touched.
   void relocate(Index s, std::vector<char>& dirty);
 
@@ -162,6 +176,14 @@ class EngineBase : public ChemistryEngine {
   // Per species: hop-rate factors along its surface's edges (region-local edge order),
   // empty for none (setSurfaceDrift).
   std::vector<std::vector<double>> drift_;
+  // Per species: its interaction (potential, self and pair per region-local subvolume and
+  // edge; empty for none) and field R per region-local subvolume.
+  std::vector<SurfaceInteraction> interaction_;
+  std::vector<std::vector<double>> field_;
+  // Scratch of interactionChanged: visit marks per subvolume, and the sets it builds.
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t mark_round_ = 0;
+  std::vector<Index> near_, reach_;
   // Per (subvolume, species): the most copies it may hold, −1 for none; empty when no
   // species has a footprint.
   std::vector<int> cap_;

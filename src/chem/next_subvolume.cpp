@@ -76,9 +76,20 @@ void NextSubvolumeEngine::refresh(Index i) {
     block_sum_[static_cast<std::size_t>(i) * blocks_ + b] = sum;
     v.reactions += sum;
   }
+  v.diffusion = diffusionSum(i);
+}
+
+double NextSubvolumeEngine::diffusionSum(Index i) const {
+  const int* n = &copies_[static_cast<std::size_t>(i) * S_];
   double hops = 0.0;
-  for (Index s : diffusing_[v.region]) hops += hopOutOf(i, s) * n[s];
-  v.diffusion = hops;
+  for (Index s : diffusing_[sub_[i].region]) hops += hopOutOf(i, s) * n[s];
+  return hops;
+}
+
+// After copies of an interacting species moved: every subvolume whose hop rates changed
+// gets its diffusion sum anew.
+[[gnu::noinline]] void NextSubvolumeEngine::interactionMoved(Index s, Index a, Index b) {
+  for (Index v : interactionChanged(s, a, b)) changeSubvolume(v, [&] { sub_[v].diffusion = diffusionSum(v); });
 }
 
 void NextSubvolumeEngine::setPropensity(Index i, Index r) {
@@ -125,6 +136,7 @@ void NextSubvolumeEngine::changeSubvolume(Index i, Change&& change) {
 void NextSubvolumeEngine::setCopies(Index subvolume, Index species, int n) {
   checkCopies(subvolume, species, n);
   changeSubvolume(subvolume, [&] { changeCopies(subvolume, species, n - copies_[slot(subvolume, species)]); });
+  if (interacting(species)) interactionMoved(species, subvolume, subvolume);
 }
 
 void NextSubvolumeEngine::setRateFactor(Index reaction, Index subvolume, double factor) {
@@ -280,6 +292,7 @@ NextSubvolumeEngine::HopOutcome NextSubvolumeEngine::hop(Index i, double x) {
 
   changeCopies(i, s, -1);
   changeSubvolume(dest, [&] { changeCopies(dest, s, +1); });
+  if (interacting(s)) interactionMoved(s, i, dest);
   return HopOutcome::kMoved;
 }
 

@@ -50,6 +50,10 @@ class NextSubvolumeEngine final : public EngineBase {
 
   void setRateFactor(Index reaction, Index subvolume, double factor) override;
   void refresh(Index i);
+  // sum_s hopOutOf(i, s) * n_s, from scratch.
+  double diffusionSum(Index i) const;
+  // After copies of interacting species s changed in a and b (EngineBase::interactionChanged).
+  void interactionMoved(Index s, Index a, Index b);
   void refreshSubvolume(Index i) override { refresh(i); }
   void relaidOut() override;
   const int* heldCopies(Index i) const { return &copies_[static_cast<std::size_t>(holder_[i]) * S_]; }

@@ -98,6 +98,13 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
   }
 }
 
+bool interacting(const std::vector<MembraneConfig>& membranes, const std::string& species) {
+  for (const MembraneConfig& m : membranes)
+    for (const SurfaceSpeciesConfig& s : m.species)
+      if (s.name == species) return s.interaction.has_value();
+  return false;
+}
+
 }  // namespace
 
 std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
@@ -151,6 +158,12 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
                                          c.surfaces[surface], c.surfaces[on]));
         if (on >= 0) surface = on;
       }
+    for (const auto* list : {&def.reactants, &def.products})
+      for (const Stoichiometry& x : *list)
+        if (interacting(membranes, c.species[x.species].name))
+          r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction]: it cannot take part in "
+                                         "reactions (binding and unbinding would need its pair energy; not "
+                                         "implemented)", c.species[x.species].name));
     const bool on_surface = surface >= 0;
     if (on_surface && restriction.restricted())
       r.fail(restriction.region ? "region" : restriction.side.outside ? "outside" : "inside",

@@ -35,6 +35,15 @@ CurvatureSensingConfig readCurvature(const ConfigReader& r) {
   return c;
 }
 
+SurfaceInteractionConfig readInteraction(const ConfigReader& r) {
+  SurfaceInteractionConfig i;
+  r.choice("type", "gaussian", {"gaussian"});
+  i.height = r.requiredNumber("height", Range{-10.0, 10.0}, "k_BT");
+  i.range = r.requiredNumber("range", Range::positive(), "nm");
+  r.finish();
+  return i;
+}
+
 SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   SurfaceSpeciesConfig s;
   if (!r.has("name")) r.fail("name", "is required");
@@ -47,6 +56,12 @@ SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   s.footprint = r.number("footprint", 0.0, Range::nonNegative(), "nm^2");
   if (const auto p = r.table("potential")) s.potential = readPotential(*p);
   if (const auto c = r.table("curvature")) s.curvature = readCurvature(*c);
+  if (const auto i = r.table("interaction")) {
+    // Curvature sensing's energies depend on the copies too; the engine keeps only the
+    // pair field exact event by event, so the two are not combined.
+    if (s.curvature) r.fail("interaction", "cannot be combined with [curvature] (not implemented)");
+    s.interaction = readInteraction(*i);
+  }
   s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear
                                                                                  : DriftScheme::kExponential;
   r.finish();

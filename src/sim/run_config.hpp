@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "chem/chemistry_engine.hpp"
+#include "chem/hop_drift.hpp"
 #include "core/types.hpp"
 #include "filament/filament_params.hpp"
 #include "interact/membrane_bead_exclusion.hpp"
@@ -60,11 +61,13 @@ struct CurvatureSensingConfig {
   bool generates = false;
 };
 
-// How a potential biases the hops along an edge whose ends differ by x = β(h_j − h_i):
-// the exponentially fitted (Scharfetter–Gummel) factor x/(eˣ − 1), exact for the
-// Boltzmann distribution at any x, or the linear 1 − x/2, whose rates turn negative for
-// |x| > 2 (such edges are closed both ways).
-enum class DriftScheme { kExponential, kLinear };
+// The pair attraction of a membrane species' copies (thesis 3.3.2): a Gaussian pair
+// potential μ(r) = −height · e^{−r²/range²} in its mean-field form R = μ₀ n + μ₂ Δn
+// (sim/pair_interaction.hpp). Positive heights attract, negative ones repel.
+struct SurfaceInteractionConfig {
+  double height = 0.0;  // k_BT
+  double range = 0.0;   // nm, σ
+};
 
 // A protein species living on a membrane's vertices (thesis chapter 3), from
 // [[membrane.species]]: copies per vertex, hopping along the mesh's edges
@@ -83,6 +86,7 @@ struct SurfaceSpeciesConfig {
   double footprint = 0.0;
   std::optional<SurfacePotentialConfig> potential;
   std::optional<CurvatureSensingConfig> curvature;
+  std::optional<SurfaceInteractionConfig> interaction;
   DriftScheme drift = DriftScheme::kExponential;
 };
 

@@ -15,13 +15,6 @@ double surfacePotential(const SurfacePotentialConfig& p, const Vec3& x) {
   return 0.0;
 }
 
-namespace {
-
-// x / (eˣ − 1), with its limit 1 at x = 0 (expm1 keeps it accurate for small |x|).
-double bernoulli(double x) { return std::abs(x) < 1e-12 ? 1.0 - 0.5 * x : x / std::expm1(x); }
-
-}  // namespace
-
 DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& h, DriftScheme scheme) {
   return driftFactors(graph, h, h, scheme);
 }
@@ -36,12 +29,10 @@ DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>
       const double x = arrive[j] - leave[i];
       const double reverse = arrive[i] - leave[j];
       if (scheme == DriftScheme::kExponential) {
-        out.factors[e] = bernoulli(x);
-      } else if (std::max(std::abs(x), std::abs(reverse)) >= 2.0) {  // both ways, so at |x| = 2 not 0 one way and 2 the other
-        out.factors[e] = 0.0;
-        ++out.closed_edges;  // counted from both ends
+        out.factors[e] = exponentialDrift(x);
       } else {
-        out.factors[e] = 1.0 - 0.5 * x;
+        out.factors[e] = linearDrift(x, reverse);
+        out.closed_edges += out.factors[e] == 0.0;  // counted from both ends
       }
     }
   out.closed_edges /= 2;

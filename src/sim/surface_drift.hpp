@@ -3,16 +3,11 @@
 // D (cot α + cot β)/(2|C_i|) along each edge, so that copies are stationary in
 // proportion to |C_j| e^{−h_j}.
 //
-// Along a directed edge i → j with x = h_j − h_i the free rate is multiplied by
-//   exponential (Scharfetter–Gummel): B(x) = x / (eˣ − 1),
-//   linear:                           1 − x/2  (0 both ways where |x| ≥ 2).
-// B(−x) = eˣ B(x), so the exponential factors satisfy detailed balance exactly at any
-// x; the linear ones are its first-order expansion, in detailed balance to O(x³), and
-// their rates turn negative past |x| = 2; from |x| = 2 on the edge is closed in both directions
-// (the thesis' clipping, done symmetrically so the stationary state stays Boltzmann on
-// the remaining edges). Both lump the drift onto the edge (a two-point flux) rather than
-// use eq. 3.9's full finite-element a_jk; they agree with it to first order in x on a
-// smooth potential (docs/proteins.md).
+// Along a directed edge i → j with x = h_j − h_i the free rate is multiplied by the
+// factor of chem/hop_drift.hpp (exponential B(x), or linear 1 − x/2 closed at |x| ≥ 2).
+// Both lump the drift onto the edge (a two-point flux) rather than use eq. 3.9's full
+// finite-element a_jk; they agree with it to first order in x on a smooth potential
+// (docs/proteins.md).
 #pragma once
 
 #include <vector>

@@ -10,6 +10,7 @@
 #include "core/random.hpp"
 #include "membrane/curvature.hpp"
 #include "sim/curvature_sensing.hpp"
+#include "sim/pair_interaction.hpp"
 #include "sim/surface_drift.hpp"
 #include "sim/surface_graph.hpp"
 #include "sim/system.hpp"
@@ -134,6 +135,14 @@ void SurfaceSpeciesFeedback::update(System& system) {
     }
     const std::vector<CopyEnergies> energies = copyEnergies(s, membrane, cells.graph, system.time());
     for (std::size_t j = 0; j < s.species.size(); ++j) {
+      if (const auto& pair = s.configs[j].interaction) {
+        // The engine biases the hops by the pair field itself, event by event.
+        std::vector<double> potential = energies[j].arrive;
+        potential.resize(static_cast<std::size_t>(n), 0.0);
+        engine_.setSurfaceInteraction(s.species[j], pairInteraction(cells.graph, gaussianPairMoments(pair->height, pair->range),
+                                                                    std::move(potential), s.configs[j].drift));
+        continue;
+      }
       if (energies[j].arrive.empty()) continue;
       const DriftFactors drift = driftFactors(cells.graph, energies[j].arrive, energies[j].leave, s.configs[j].drift);
       closed_.drift += drift.closed_edges;

@@ -1,7 +1,7 @@
 """The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
 run(args) -> exit code."""
 
-from . import barrier, filaments, info, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting
+from . import barrier, filaments, info, llps, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting
 
 # Command name -> module, in the order `--help` lists them.
 COMMANDS = {
@@ -14,5 +14,6 @@ COMMANDS = {
     "protrusion": protrusion,
     "barrier": barrier,
     "sorting": sorting,
+    "llps": llps,
     "mesh-resolution": mesh_resolution,
 }

@@ -32,24 +32,10 @@ def add_arguments(p):
     p.add_argument("--title", help="figure title")
 
 
-def species_of(membrane, name, where):
-    if not membrane.species:
-        raise CortexError(f"{where}: membrane '{membrane.name}' has no species")
-    if name is None:
-        if len(membrane.species) > 1:
-            raise CortexError(f"{where}: membrane '{membrane.name}' has species {', '.join(sorted(membrane.species))}; "
-                              "choose one with --species")
-        return next(iter(membrane.species))
-    if name not in membrane.species:
-        raise CortexError(f"{where}: membrane '{membrane.name}' has no species '{name}' "
-                          f"(it has {', '.join(sorted(membrane.species))})")
-    return name
-
-
 def table(outdir, membrane_name, species_name, split):
     run = common.open_run(outdir)
     membrane = common.membranes_of(run.snapshot(0), membrane_name)[0]
-    species = species_of(membrane, species_name, run.trajectory_path)
+    species = common.species_of(membrane, species_name, run.trajectory_path)
     x = membrane.vertices[:, 0]
     if split is None:
         split = 0.5 * (x.min() + x.max())

@@ -90,6 +90,21 @@ def membranes_of(snapshot, name=None):
     return [membranes[name]]
 
 
+def species_of(membrane, name, where):
+    """The membrane species `name`, or the membrane's only one when name is None."""
+    if not membrane.species:
+        raise CortexError(f"{where}: membrane '{membrane.name}' has no species")
+    if name is None:
+        if len(membrane.species) > 1:
+            raise CortexError(f"{where}: membrane '{membrane.name}' has species {', '.join(sorted(membrane.species))}; "
+                              "choose one with --species")
+        return next(iter(membrane.species))
+    if name not in membrane.species:
+        raise CortexError(f"{where}: membrane '{membrane.name}' has no species '{name}' "
+                          f"(it has {', '.join(sorted(membrane.species))})")
+    return name
+
+
 def filaments_of(snapshot):
     filaments = snapshot.filaments
     if filaments is None:

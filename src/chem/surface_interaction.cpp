@@ -1,0 +1,122 @@
+// EngineBase's pair interactions of surface species (ChemistryEngine::SurfaceInteraction):
+// the field R = K N of the other copies and the hop rates it biases, kept exact after
+// every event that moves a copy.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "chem/engine_base.hpp"
+
+namespace cortex {
+
+void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interaction) {
+  if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
+  const Index region = net_.speciesRegion[species];
+  if (region == 0) throw std::invalid_argument("chemistry engine: only surface species interact");
+  for (Index r = 0; r < R_; ++r)
+    for (const SpeciesChange& change : net_.changes[r])
+      if (change.species == species)
+        throw std::invalid_argument("chemistry engine: interacting species \"" + species_[species].name +
+                                    "\" takes part in reaction \"" + equations_[r] + "\" (not supported)");
+  const SubvolumeGraph& g = graphs_[region];
+  const auto n = static_cast<std::size_t>(g.count());
+  if (interaction.potential.size() != n || interaction.self.size() != n ||
+      interaction.pair.size() != static_cast<std::size_t>(g.numEdges()))
+    throw std::invalid_argument("chemistry engine: an interaction needs a potential and a self term per subvolume "
+                                "and a pair term per edge of the surface");
+  auto finite = [](const std::vector<double>& v) {
+    for (double x : v)
+      if (!std::isfinite(x)) return false;
+    return true;
+  };
+  if (!finite(interaction.potential) || !finite(interaction.self) || !finite(interaction.pair))
+    throw std::invalid_argument("chemistry engine: an interaction term is not finite");
+  for (Index i = 0; i < g.count(); ++i)
+    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
+      const Index j = g.target[e];
+      Index back = -1;
+      for (Index f = g.start[j]; f < g.start[j + 1]; ++f)
+        if (g.target[f] == i) back = f;
+      const double a = interaction.pair[e];
+      if (back < 0 || std::abs(a - interaction.pair[back]) > 1e-12 * std::max(std::abs(a), 1.0))
+        throw std::invalid_argument("chemistry engine: an interaction's pair terms are not symmetric");
+    }
+  drift_[species].clear();
+  interaction_[species] = std::move(interaction);
+  field_[species].assign(n, 0.0);
+  computeHopRates();
+  for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
+}
+
+double EngineBase::pairField(Index s, Index i) const {
+  const SurfaceInteraction& k = interaction_[s];
+  const Index first = region_start_[net_.speciesRegion[s]];
+  const Index first_edge = edge_start_[first];
+  double r = k.self[i - first] * copies_[static_cast<std::size_t>(i) * S_ + s];
+  for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
+    r += k.pair[e - first_edge] * copies_[static_cast<std::size_t>(edge_target_[e]) * S_ + s];
+  return r;
+}
+
+double EngineBase::interactionRate(Index s, Index i, Index e) const {
+  const SurfaceInteraction& k = interaction_[s];
+  const Index first = region_start_[net_.speciesRegion[s]];
+  const Index a = i - first, b = edge_target_[e] - first;
+  const double* field = field_[s].data();
+  // The moving copy leaves its own field behind: − K_ik + K_ii.
+  const double x = k.potential[b] - k.potential[a] + field[b] - field[a] - k.pair[e - edge_start_[first]] + k.self[a];
+  const double factor = k.scheme == DriftScheme::kExponential ? exponentialDrift(x) : linearDrift(x, -x);
+  return species_[s].diffusion / hop_length2_[e] * factor;
+}
+
+void EngineBase::computeInteractionRates(Index s, Index i) {
+  double total = 0.0;
+  for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e) {
+    const double rate = interactionRate(s, i, e);
+    edge_rate_[static_cast<std::size_t>(e) * S_ + s] = rate;
+    total += rate;
+  }
+  hop_out_[static_cast<std::size_t>(i) * S_ + s] = total;
+}
+
+// R changes at a, b and their neighbours (K has the graph's sparsity): every rate out of
+// those changes. A vertex one ring further keeps its own R, so only its edges into them
+// change; its hopOut is summed anew from the stored edge rates (in edge order, so it is
+// the same number computeHopRates gives).
+const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index b) {
+  if (mark_.size() != static_cast<std::size_t>(N_) || mark_round_ >= UINT32_MAX - 2) {
+    mark_.assign(N_, 0);
+    mark_round_ = 0;
+  }
+  const std::uint32_t near_mark = ++mark_round_, reach_mark = ++mark_round_;
+  near_.clear();
+  auto add = [&](std::vector<Index>& list, Index v, std::uint32_t mark) {
+    if (mark_[v] == near_mark || mark_[v] == mark) return;
+    mark_[v] = mark;
+    list.push_back(v);
+  };
+  for (Index end : {a, b}) {
+    add(near_, end, near_mark);
+    for (Index e = edge_start_[end]; e < edge_start_[end + 1]; ++e) add(near_, edge_target_[e], near_mark);
+  }
+  const Index first = region_start_[net_.speciesRegion[s]];
+  for (Index v : near_) field_[s][v - first] = pairField(s, v);
+  reach_ = near_;
+  for (Index v : near_) {
+    computeInteractionRates(s, v);
+    for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) add(reach_, edge_target_[e], reach_mark);
+  }
+  for (auto k = near_.size(); k < reach_.size(); ++k) {
+    const Index v = reach_[k];
+    double total = 0.0;
+    for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) {
+      double& rate = edge_rate_[static_cast<std::size_t>(e) * S_ + s];
+      if (mark_[edge_target_[e]] == near_mark) rate = interactionRate(s, v, e);
+      total += rate;
+    }
+    hop_out_[static_cast<std::size_t>(v) * S_ + s] = total;
+  }
+  return reach_;
+}
+
+}  // namespace cortex
