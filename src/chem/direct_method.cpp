@@ -19,10 +19,10 @@ void DirectMethodEngine::relaidOut() {
 
 void DirectMethodEngine::recompute(Index i) {
   const int* n = &copies_[static_cast<std::size_t>(i) * S_];
-  const int* held = &copies_[static_cast<std::size_t>(holder_[i]) * S_];
+  if (region_of_[i] == 0) refreshBindingWeights(i);
   for (Index r = 0; r < R_; ++r) {
     const std::size_t k = static_cast<std::size_t>(i) * R_ + r;
-    propensity_[k] = factor_[k] * constantAt(i, r) * confinementScale(i, r) * combinations(net_.kernels[r], n, held);
+    propensity_[k] = propensityAt(i, r, factor_[k] * constantAt(i, r));
   }
   const std::size_t hops = static_cast<std::size_t>(N_) * R_;
   for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
@@ -59,6 +59,7 @@ void DirectMethodEngine::setRateFactor(Index reaction, Index subvolume, double f
   checkRateFactor(reaction, subvolume, factor);
   factor_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor;
   recompute(subvolume);
+  if (aggregated(reaction)) recompute(holder_[subvolume]);
 }
 
 void DirectMethodEngine::advance(double t_end) {
@@ -89,8 +90,10 @@ void DirectMethodEngine::advance(double t_end) {
 void DirectMethodEngine::fire(std::size_t channel) {
   const std::size_t reaction_channels = static_cast<std::size_t>(N_) * R_;
   if (channel < reaction_channels) {
-    const Index i = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
-    if (!capAccepts(r, i) || !hookAccepts(r, i)) return;  // void event (thinning): nothing changes
+    const Index carrier = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
+    // An aggregated reaction fires in one of the surface subvolumes its carrier holds.
+    const Index i = aggregated(r) ? drawBindingSite(carrier, r) : carrier;
+    if (i < 0 || !capAccepts(r, i) || !hookAccepts(r, i)) return;  // void event (thinning): nothing changes
     for (const SpeciesChange& change : net_.changes[r]) {
       const Index at = change.held ? holder_[i] : i;
       int& n = copies_[static_cast<std::size_t>(at) * S_ + change.species];

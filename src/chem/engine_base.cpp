@@ -31,6 +31,8 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       interaction_(S_),
       field_(S_) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
+  for (Index r = 0; r < R_; ++r)
+    if (aggregated(r)) aggregated_.push_back(r);
   graphs_[0] = model.volumes;
   const Index n0 = model.volumes.count();
   if (copies.size() != static_cast<std::size_t>(n0) * S_)
@@ -115,6 +117,32 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
 
 // Unweighted species hop at D / l^2 along every edge of their region (all edges alike);
 // the others get per-edge rates, scaled by a / f_source when confined.
+double EngineBase::bindingWeightSum(Index h, Index r) const {
+  double sum = 0.0;
+  for (Index j : held_[h]) sum += bindingWeight(j, r);
+  return sum;
+}
+
+void EngineBase::refreshBindingWeights(Index h) {
+  if (aggregated_.empty()) return;
+  if (binding_weight_.size() != static_cast<std::size_t>(region_start_[1]) * R_)
+    binding_weight_.assign(static_cast<std::size_t>(region_start_[1]) * R_, 0.0);
+  for (Index r : aggregated_) refreshBindingWeight(h, r);
+}
+
+Index EngineBase::drawBindingSite(Index h, Index r) {
+  double x = rng_.uniform() * bindingWeightSum(h, r);
+  Index last = -1;
+  for (Index j : held_[h]) {
+    const double w = bindingWeight(j, r);
+    if (!(w > 0.0)) continue;
+    last = j;
+    if (x < w) return j;
+    x -= w;
+  }
+  return last;  // rounding at the end
+}
+
 void EngineBase::computeHopRates() {
   const auto regions = static_cast<Index>(graphs_.size());
   std::vector<char> uniform(regions, 1);

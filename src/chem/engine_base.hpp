@@ -66,6 +66,34 @@ class EngineBase : public ChemistryEngine {
   // The subvolumes were laid out anew (setSurface): resize and recompute everything.
   virtual void relaidOut() = 0;
 
+  // Aggregated reactions (ReactionNetwork::aggregated), carried by the 3D subvolume h
+  // holding the surface subvolumes j where they fire: weight c_j (rate factor, constant,
+  // confinement scale); the sum over the subvolumes h holds, cached per (h, r) by
+  // refreshBindingWeights; h's propensity; and the subvolume where one fires, drawn ∝ c_j
+  // (−1 if every weight is 0).
+  bool aggregated(Index r) const { return net_.aggregated[r] != 0; }
+  double bindingWeight(Index j, Index r) const {
+    return factor_[static_cast<std::size_t>(j) * R_ + r] * constantAt(j, r) * confinementScale(j, r);
+  }
+  double bindingWeightSum(Index h, Index r) const;
+  void refreshBindingWeight(Index h, Index r) {
+    binding_weight_[static_cast<std::size_t>(h) * R_ + r] = bindingWeightSum(h, r);
+  }
+  void refreshBindingWeights(Index h);
+  double bindingPropensity(Index h, Index r) const {
+    const int* n = &copies_[static_cast<std::size_t>(h) * S_];
+    return binding_weight_[static_cast<std::size_t>(h) * R_ + r] * combinations(net_.kernels[r], n, n);
+  }
+  Index drawBindingSite(Index h, Index r);
+  // Propensity of reaction r in subvolume i from rate_[i * R + r] (the engines' cached
+  // factor × constant): aggregated reactions on their 3D holder, 0 on surface subvolumes.
+  double propensityAt(Index i, Index r, double rate) const {
+    if (aggregated(r)) return region_of_[i] == 0 ? bindingPropensity(i, r) : 0.0;
+    return rate * confinementScale(i, r) *
+           combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
+                        &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
+  }
+
   // Whether copies of s interact (setSurfaceInteraction).
   bool interacting(Index s) const { return !interaction_[s].potential.empty(); }
   // After copies of interacting species s changed in subvolumes a and b (a hop a → b, or
@@ -176,6 +204,8 @@ class EngineBase : public ChemistryEngine {
   // Per species: hop-rate factors along its surface's edges (region-local edge order),
   // empty for none (setSurfaceDrift).
   std::vector<std::vector<double>> drift_;
+  std::vector<Index> aggregated_;       // the aggregated reactions
+  std::vector<double> binding_weight_;  // [h * R + r] over the 3D subvolumes, for aggregated r
   // Per species: its interaction (potential, self and pair per region-local subvolume and
   // edge; empty for none) and field R per region-local subvolume.
   std::vector<SurfaceInteraction> interaction_;

@@ -63,14 +63,13 @@ void NextSubvolumeEngine::relaidOut() {
 // Exact propensities and sums of subvolume i from its copies.
 void NextSubvolumeEngine::refresh(Index i) {
   Subvolume& v = sub_[i];
-  const int* n = &copies_[static_cast<std::size_t>(i) * S_];
-  const int* held = heldCopies(i);
   const std::size_t base = static_cast<std::size_t>(i) * R_;
+  if (v.region == 0) refreshBindingWeights(i);
   v.reactions = 0.0;
   for (Index b = 0; b < blocks_; ++b) {
     double sum = 0.0;
     for (Index r = b * kBlock; r < std::min(R_, (b + 1) * kBlock); ++r) {
-      propensity_[base + r] = rate_[base + r] * confinementScale(i, r) * combinations(net_.kernels[r], n, held);
+      propensity_[base + r] = propensityAt(i, r, rate_[base + r]);
       sum += propensity_[base + r];
     }
     block_sum_[static_cast<std::size_t>(i) * blocks_ + b] = sum;
@@ -94,8 +93,7 @@ double NextSubvolumeEngine::diffusionSum(Index i) const {
 
 void NextSubvolumeEngine::setPropensity(Index i, Index r) {
   const std::size_t k = static_cast<std::size_t>(i) * R_ + r;
-  const double p = rate_[k] * confinementScale(i, r) *
-                   combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_], heldCopies(i));
+  const double p = propensityAt(i, r, rate_[k]);
   const double delta = p - propensity_[k];
   propensity_[k] = p;
   block_sum_[static_cast<std::size_t>(i) * blocks_ + r / kBlock] += delta;
@@ -142,6 +140,15 @@ void NextSubvolumeEngine::setCopies(Index subvolume, Index species, int n) {
 void NextSubvolumeEngine::setRateFactor(Index reaction, Index subvolume, double factor) {
   checkRateFactor(reaction, subvolume, factor);
   factor_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor;
+  if (aggregated(reaction)) {
+    if (region_of_[subvolume] == 0) return;  // the reaction never fires in a 3D subvolume
+    const Index h = holder_[subvolume];
+    changeSubvolume(h, [&] {
+      refreshBindingWeight(h, reaction);
+      setPropensity(h, reaction);
+    });
+    return;
+  }
   changeSubvolume(subvolume, [&] {
     rate_[static_cast<std::size_t>(subvolume) * R_ + reaction] = factor * constantAt(subvolume, reaction);
     setPropensity(subvolume, reaction);
@@ -184,11 +191,13 @@ void NextSubvolumeEngine::fire(Index i, double t) {
     r = pickReaction(i, x);
     // A reaction that would overfill a crowded subvolume, or that its hook refuses, is a
     // void event (thinning): nothing changes.
-    if (r >= 0 && capAccepts(r, i) && hookAccepts(r, i)) {
+    if (r >= 0 && aggregated(r)) {
+      fired = fireBinding(i, r);
+    } else if (r >= 0 && capAccepts(r, i) && hookAccepts(r, i)) {
       react(i, r);
-      ++reaction_events_[r];
       fired = true;
     }
+    if (fired) ++reaction_events_[r];
   } else {
     const HopOutcome h = hop(i, x - reactions);
     fired = h == HopOutcome::kMoved;
@@ -253,6 +262,29 @@ void NextSubvolumeEngine::react(Index i, Index r) {
     checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
     changeSubvolume(h, [&] { changeCopies(h, change.species, change.delta); });
   }
+}
+
+// The firing 3D subvolume h carries the aggregated reaction r: it happens in one of the
+// surface subvolumes h holds, drawn by its weight (there its cap and hook decide).
+bool NextSubvolumeEngine::fireBinding(Index h, Index r) {
+  const Index j = drawBindingSite(h, r);
+  if (j < 0 || !capAccepts(r, j) || !hookAccepts(r, j)) return false;  // a void event
+  for (const SpeciesChange& change : net_.changes[r]) {
+    if (!change.held) continue;
+    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
+    changeCopies(h, change.species, change.delta);
+  }
+  changeSubvolume(j, [&] {
+    int* n = &copies_[static_cast<std::size_t>(j) * S_];
+    for (const SpeciesChange& change : net_.changes[r]) {
+      if (change.held) continue;
+      checkGrowth(n[change.species], change.delta, j, change.species);
+      n[change.species] += change.delta;
+      sub_[j].diffusion += change.delta * hopOutOf(j, change.species);
+    }
+    for (Index dependent : net_.affected[r]) setPropensity(j, dependent);
+  });
+  return true;
 }
 
 // x in [0, diffusion of i) picks the species by its share and, with what is left of it,

@@ -56,7 +56,6 @@ class NextSubvolumeEngine final : public EngineBase {
   void interactionMoved(Index s, Index a, Index b);
   void refreshSubvolume(Index i) override { refresh(i); }
   void relaidOut() override;
-  const int* heldCopies(Index i) const { return &copies_[static_cast<std::size_t>(holder_[i]) * S_]; }
   // EngineBase::hopOutOf from the record the loop has at hand.
   double hopOutOf(Index i, Index s) const {
     return weighted(s) ? hopOut(i, s) : sub_[i].degree * hopRate(s);
@@ -70,6 +69,7 @@ class NextSubvolumeEngine final : public EngineBase {
   void fire(Index i, double t);
   Index pickReaction(Index i, double x) const;
   void react(Index i, Index r);
+  bool fireBinding(Index h, Index r);
   // kMissed: rounding put x past the last channel; kCrowded: the destination is full
   // (SpeciesDef::footprint), a void event.
   enum class HopOutcome { kMoved, kCrowded, kMissed };

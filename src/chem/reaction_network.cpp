@@ -116,8 +116,11 @@ ReactionNetwork::ReactionNetwork(const ChemistryModel& model) {
       if (delta != 0) changes.values.push_back({s, delta, home != 0 && speciesRegion[s] == 0});
     changes.endRow();
     const ReactionKernel& k = kernels.back();
-    if (k.kind != ReactionKernel::Kind::kConstant) (k.a_held ? held_readers : readers)[k.a].push_back(r);
-    if (k.kind == ReactionKernel::Kind::kPair) (k.b_held ? held_readers : readers)[k.b].push_back(r);
+    // A surface reaction reading only its holder's copies is carried by the holder.
+    aggregated.push_back(home != 0 && k.kind != ReactionKernel::Kind::kConstant && surface_order_[r] == 0);
+    auto& held_list = aggregated.back() ? readers : held_readers;
+    if (k.kind != ReactionKernel::Kind::kConstant) (k.a_held ? held_list : readers)[k.a].push_back(r);
+    if (k.kind == ReactionKernel::Kind::kPair) (k.b_held ? held_list : readers)[k.b].push_back(r);
   }
   for (Index s = 0; s < numSpecies; ++s) {
     dependents.values.insert(dependents.values.end(), readers[s].begin(), readers[s].end());

@@ -74,9 +74,17 @@ struct ReactionNetwork {
   std::vector<Index> sideSpecies;   // per reaction: first reactant (else first product), -1 if none
   std::vector<char> perSite;        // per reaction (ReactionDef::per_site)
   Rows<SpeciesChange> changes;      // per reaction: net changes, species with delta 0 omitted
+  // Per reaction: a surface reaction whose reactants are all 3D species of the holder
+  // (binding, "C -> M"). Its propensity in surface subvolume j is c_j h(n_holder), so the
+  // engines carry it on the holder as one channel c_h = Σ_j c_j over the subvolumes it
+  // holds, and draw j ∝ c_j when it fires: a 3D event then updates one propensity, not
+  // one per vertex of the compartment.
+  std::vector<char> aggregated;
   Rows<Index> affected;             // per reaction: reactions of the same subvolume its local changes touch
-  Rows<Index> dependents;           // per species: reactions reading it in their own subvolume
-  Rows<Index> heldReaders;          // per 3D species: surface reactions reading it in their holder
+  // Per species: reactions reading it in their own subvolume; for a 3D species also the
+  // aggregated surface reactions reading it (carried by the same subvolume).
+  Rows<Index> dependents;
+  Rows<Index> heldReaders;          // per 3D species: the other surface reactions reading it in their holder
 
  private:
   std::vector<double> rate_;                   // per reaction, as given

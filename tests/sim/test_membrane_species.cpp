@@ -85,8 +85,9 @@ int surfaceCopies(const System& system) {
   return n;
 }
 
-void expectBinomialAdsorption(const std::string& side, const std::string& potential = "") {
-  const Config config = parseConfig(adsorptionConfig(side, potential), "adsorption.toml", ".", {});
+void expectBinomialAdsorption(const std::string& side, const std::string& potential = "",
+                              const std::string& engine = "", int count = 2000) {
+  const Config config = parseConfig(adsorptionConfig(side, potential) + engine, "adsorption.toml", ".", {});
   System system(config);
   const Membrane& m = *system.membranes()[0];
   double bulk_volume = system.grid().count() * system.grid().volume();
@@ -103,7 +104,7 @@ void expectBinomialAdsorption(const std::string& side, const std::string& potent
   std::vector<int> samples;
   double t = 10.0 * spacing;
   system.chemistry()->advance(t);
-  for (int k = 0; k < 2000; ++k) {
+  for (int k = 0; k < count; ++k) {
     t += spacing;
     system.chemistry()->advance(t);
     samples.push_back(surfaceCopies(system));
@@ -123,6 +124,13 @@ void expectBinomialAdsorption(const std::string& side, const std::string& potent
 
 TEST(MembraneSpecies, AdsorptionEquilibriumIsBinomialWithRatioRadATimesAreaOverRdeTimesVolume) {
   expectBinomialAdsorption("");
+}
+
+// Binding is carried by each compartment as one channel (ReactionNetwork::aggregated); the
+// direct method draws the vertex through its own event loop (500 samples: it sums every
+// channel per event and is 40× slower here).
+TEST(MembraneSpecies, AdsorptionEquilibriumIsBinomialWithTheDirectMethodToo) {
+  expectBinomialAdsorption("", "", "[chemistry]\nengine = \"direct\"", 500);
 }
 
 TEST(MembraneSpecies, AdsorptionFromAConfinedBulkUsesTheVolumeOnItsSide) {
