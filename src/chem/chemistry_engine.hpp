@@ -137,7 +137,11 @@ class ChemistryEngine {
   // and its rate is the free one times the drift factor of `scheme` (chem/hop_drift.hpp);
   // the exponential one keeps detailed balance with e^{−W} exactly. Rates are kept exact
   // event by event: after each hop the field and the hop rates around both ends are
-  // recomputed. The species may not take part in reactions.
+  // recomputed. The species may bind from 3D species (a reaction whose only surface
+  // change is one more copy of it; binding is aggregated, ReactionNetwork::aggregated) and
+  // unbind into them (one copy of it → 3D species); unbinding from j then fires at
+  // r e^{V_j + R_j − K_jj}, the energy its copy leaves, so binding keeps detailed balance
+  // with e^{−W}. Other reactions of it are refused.
   struct SurfaceInteraction {
     std::vector<double> potential;  // per subvolume of the surface: V_j
     std::vector<double> self;       // per subvolume: K_jj
@@ -146,8 +150,8 @@ class ChemistryEngine {
   };
   // Gives surface species `species` its interaction on the surface's current graph
   // (setSurface clears it, as it does drift factors). Throws std::invalid_argument for a
-  // 3D species, one that reactions change, sizes other than the graph's, values not
-  // finite, or K not symmetric.
+  // 3D species, one that other reactions change, sizes other than the graph's, values
+  // not finite, or K not symmetric.
   virtual void setSurfaceInteraction(Index species, SurfaceInteraction interaction) = 0;
 
   // The total propensity (events/s) at the current copies and rates, and the channel

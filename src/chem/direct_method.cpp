@@ -103,6 +103,9 @@ void DirectMethodEngine::fire(std::size_t channel) {
     }
     ++reaction_events_[r];
     recompute(i);
+    for (const SpeciesChange& change : net_.changes[r])
+      if (!change.held && interacting(change.species))
+        for (Index v : interactionChanged(change.species, i, i)) recompute(v);
   } else {
     const std::size_t hop = channel - reaction_channels;
     const auto e = static_cast<Index>(hop / S_);

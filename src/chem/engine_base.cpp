@@ -355,6 +355,8 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
       drift_[s].clear();
       interaction_[s] = SurfaceInteraction{};
       field_[s].clear();
+      for (Index& u : unbinding_)
+        if (u == s) u = -1;
     }
   layOut(region, copies);
   relaidOut();

@@ -89,13 +89,22 @@ class EngineBase : public ChemistryEngine {
   // factor × constant): aggregated reactions on their 3D holder, 0 on surface subvolumes.
   double propensityAt(Index i, Index r, double rate) const {
     if (aggregated(r)) return region_of_[i] == 0 ? bindingPropensity(i, r) : 0.0;
-    return rate * confinementScale(i, r) *
-           combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
-                        &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
+    const double p = rate * confinementScale(i, r) *
+                     combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
+                                  &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
+    if (unbinding_.empty() || unbinding_[r] < 0 || region_of_[i] == 0) return p;
+    return p * unbindingFactor(i, unbinding_[r]);
   }
 
   // Whether copies of s interact (setSurfaceInteraction).
   bool interacting(Index s) const { return !interaction_[s].potential.empty(); }
+  // e^{V_i + R_i − K_ii}: the factor on the unbinding of interacting species s from
+  // surface subvolume i (the energy its copy leaves behind).
+  double unbindingFactor(Index i, Index s) const;
+  // How many of interactionChanged's subvolumes come first as those whose field changed.
+  std::size_t interactionFieldsChanged() const { return near_.size(); }
+  // Per reaction: the interacting species it unbinds, −1 for none; empty if none does.
+  std::vector<Index> unbinding_;
   // After copies of interacting species s changed in subvolumes a and b (a hop a → b, or
   // a == b): recomputes the field R around them and the hop rates that read it (each a
   // pure function of the copies, so a restored engine gets the same numbers). Returns the

@@ -88,7 +88,17 @@ double NextSubvolumeEngine::diffusionSum(Index i) const {
 // After copies of an interacting species moved: every subvolume whose hop rates changed
 // gets its diffusion sum anew.
 [[gnu::noinline]] void NextSubvolumeEngine::interactionMoved(Index s, Index a, Index b) {
-  for (Index v : interactionChanged(s, a, b)) changeSubvolume(v, [&] { sub_[v].diffusion = diffusionSum(v); });
+  const std::vector<Index>& changed = interactionChanged(s, a, b);
+  const std::size_t fields = interactionFieldsChanged();
+  for (std::size_t k = 0; k < changed.size(); ++k) {
+    const Index v = changed[k];
+    changeSubvolume(v, [&] {
+      sub_[v].diffusion = diffusionSum(v);
+      if (k < fields && !unbinding_.empty())  // its unbinding reads the field
+        for (Index r = 0; r < R_; ++r)
+          if (unbinding_[r] == s) setPropensity(v, r);
+    });
+  }
 }
 
 void NextSubvolumeEngine::setPropensity(Index i, Index r) {
@@ -246,6 +256,8 @@ void NextSubvolumeEngine::react(Index i, Index r) {
     cascades = cascades || !net_.heldReaders[change.species].empty();
   }
   for (Index dependent : net_.affected[r]) setPropensity(i, dependent);
+  for (const SpeciesChange& change : net_.changes[r])
+    if (!change.held && interacting(change.species)) interactionMoved(change.species, i, i);
   // What the local changes do to the surface subvolumes i holds, and the held changes of
   // a surface reaction in i's holder (which in turn reach every subvolume it holds).
   if (cascades)
@@ -284,6 +296,8 @@ bool NextSubvolumeEngine::fireBinding(Index h, Index r) {
     }
     for (Index dependent : net_.affected[r]) setPropensity(j, dependent);
   });
+  for (const SpeciesChange& change : net_.changes[r])
+    if (!change.held && interacting(change.species)) interactionMoved(change.species, j, j);
   return true;
 }
 

@@ -13,11 +13,23 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
   const Index region = net_.speciesRegion[species];
   if (region == 0) throw std::invalid_argument("chemistry engine: only surface species interact");
-  for (Index r = 0; r < R_; ++r)
-    for (const SpeciesChange& change : net_.changes[r])
-      if (change.species == species)
-        throw std::invalid_argument("chemistry engine: interacting species \"" + species_[species].name +
-                                    "\" takes part in reaction \"" + equations_[r] + "\" (not supported)");
+  std::vector<Index> unbinds;
+  for (Index r = 0; r < R_; ++r) {
+    int own = 0, others = 0;
+    for (const SpeciesChange& change : net_.changes[r]) {
+      if (change.species == species) own = change.delta;
+      else if (!change.held) ++others;
+    }
+    if (own == 0) continue;
+    const ReactionKernel& k = net_.kernels[r];
+    const bool binding = aggregated(r) && own == 1 && others == 0;
+    const bool unbinding = k.kind == ReactionKernel::Kind::kLinear && k.a == species && own == -1 && others == 0;
+    if (!binding && !unbinding)
+      throw std::invalid_argument("chemistry engine: interacting species \"" + species_[species].name +
+                                  "\" takes part in reaction \"" + equations_[r] +
+                                  "\": only binding from 3D species and unbinding into them are supported");
+    if (unbinding) unbinds.push_back(r);
+  }
   const SubvolumeGraph& g = graphs_[region];
   const auto n = static_cast<std::size_t>(g.count());
   if (interaction.potential.size() != n || interaction.self.size() != n ||
@@ -44,8 +56,16 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   drift_[species].clear();
   interaction_[species] = std::move(interaction);
   field_[species].assign(n, 0.0);
+  if (!unbinds.empty() && unbinding_.empty()) unbinding_.assign(R_, -1);
+  for (Index r : unbinds) unbinding_[r] = species;
   computeHopRates();
   for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
+}
+
+double EngineBase::unbindingFactor(Index i, Index s) const {
+  const SurfaceInteraction& k = interaction_[s];
+  const Index a = i - region_start_[net_.speciesRegion[s]];
+  return std::exp(k.potential[a] + field_[s][a] - k.self[a]);
 }
 
 double EngineBase::pairField(Index s, Index i) const {

@@ -98,6 +98,19 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
   }
 }
 
+// One copy of `species` made from 3D species only, or turned into 3D species only.
+bool bindsOrUnbinds(const ReactionDef& def, Index species, const std::vector<SpeciesDef>& all) {
+  auto only3D = [&](const std::vector<Stoichiometry>& side) {
+    for (const Stoichiometry& x : side)
+      if (all[x.species].surface >= 0) return false;
+    return !side.empty();
+  };
+  auto isOne = [&](const std::vector<Stoichiometry>& side) {
+    return side.size() == 1 && side.front().species == species && side.front().count == 1;
+  };
+  return (isOne(def.products) && only3D(def.reactants)) || (isOne(def.reactants) && only3D(def.products));
+}
+
 bool interacting(const std::vector<MembraneConfig>& membranes, const std::string& species) {
   for (const MembraneConfig& m : membranes)
     for (const SurfaceSpeciesConfig& s : m.species)
@@ -158,12 +171,15 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
                                          c.surfaces[surface], c.surfaces[on]));
         if (on >= 0) surface = on;
       }
+    // An interacting species may bind from 3D species and unbind into them, nothing else
+    // (ChemistryEngine::setSurfaceInteraction).
     for (const auto* list : {&def.reactants, &def.products})
       for (const Stoichiometry& x : *list)
-        if (interacting(membranes, c.species[x.species].name))
-          r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction]: it cannot take part in "
-                                         "reactions (binding and unbinding would need its pair energy; not "
-                                         "implemented)", c.species[x.species].name));
+        if (interacting(membranes, c.species[x.species].name) && !bindsOrUnbinds(def, x.species, c.species))
+          r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction]: its reactions may only "
+                                         "bind it from 3D species (\"C -> {}\") or unbind it into them "
+                                         "(\"{} -> C\")", c.species[x.species].name, c.species[x.species].name,
+                                         c.species[x.species].name));
     const bool on_surface = surface >= 0;
     if (on_surface && restriction.restricted())
       r.fail(restriction.region ? "region" : restriction.side.outside ? "outside" : "inside",

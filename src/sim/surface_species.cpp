@@ -104,7 +104,9 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
       const Surface& s = surfaces_[k];
       const auto j = static_cast<Index>(std::find(s.species.begin(), s.species.end(), x.species) - s.species.begin());
       u.surface = k;
-      if (s.configs[j].potential || s.configs[j].curvature) u.reactants.emplace_back(j, x.count);
+      // An interacting species' unbinding carries its potential in the engine.
+      const bool feels = s.configs[j].potential || s.configs[j].curvature;
+      if (feels && !s.configs[j].interaction) u.reactants.emplace_back(j, x.count);
     }
     if (!u.reactants.empty()) unbinding_.push_back(std::move(u));
   }

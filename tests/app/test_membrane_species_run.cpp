@@ -95,10 +95,12 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
   replaceOnce(soft, "name = \"M\"", "name = \"M\"\ncurvature = { area = 10.0, bending_modulus = 50.0 }");
   expectCheckFails(soft, "membrane.0.bending_modulus", "senses curvature");
 
-  // A pair attraction on a species that binds and unbinds, or beside curvature sensing.
-  std::string binding = exampleText();
-  replaceOnce(binding, "density = 0.0 ", "interaction = { height = 0.1, range = 18.0 }\ndensity = 0.0 ");
-  expectCheckFails(binding, "reaction.0.equation", "cannot take part in reactions");
+  // A pair attraction on a species in a reaction other than binding and unbinding, or
+  // beside curvature sensing.
+  std::string dimer = exampleText();
+  replaceOnce(dimer, "density = 0.0 ", "interaction = { height = 0.1, range = 18.0 }\ndensity = 0.0 ");
+  replaceOnce(dimer, "equation = \"M -> G\"", "equation = \"2 M -> G\"");
+  expectCheckFails(dimer, "reaction.1.equation", "may only bind it");
   std::string sensing = exampleText();
   replaceOnce(sensing, "density = 0.0 ",
               "interaction = { height = 0.1, range = 18.0 }\ncurvature = { area = 10.0, bending_modulus = 50.0 }\n"
@@ -156,6 +158,11 @@ TEST(MembraneSpeciesRun, ExampleIsAccepted) {
   TempDir dir;
   const RunResult r = runCortex({"check", (sourceDir() / "examples" / "membrane_proteins.toml").string()}, dir.path());
   EXPECT_EQ(r.exit_code, 0) << describe(r);
+  // Interacting copies may bind and unbind (the engine weighs unbinding by the pair energy).
+  std::string binding = exampleText();
+  replaceOnce(binding, "density = 0.0 ", "interaction = { height = 0.1, range = 18.0 }\ndensity = 0.0 ");
+  const RunResult b = runCortex({"check", writeConfig(dir.path(), binding).string()}, dir.path());
+  EXPECT_EQ(b.exit_code, 0) << describe(b);
 }
 
 }  // namespace
