@@ -9,7 +9,8 @@ the whole copies per cell, cannot fake. The onset is the smallest h from which e
 run is separated.
 
   llps OUT                                     table
-  llps SWEEP/members/* -o llps.png --from 0.11 histograms and the map over h (fig. 3.3c,d)
+  llps SWEEP/members/* -o llps.png --from 0.11 the weakest and strongest run's last snapshot,
+                                               histograms and the map over h (fig. 3.3a-d)
 """
 
 import tomllib
@@ -26,7 +27,7 @@ HELP = "area-fraction distributions of interacting membrane species over the pai
 def add_arguments(p):
     common.add_outdirs(p, many=True)
     common.add_out(p, "PNG to write (no plot without it)")
-    common.add_figure(p, "9,3.6", 100)
+    common.add_figure(p, "14,3.6", 100)
     common.add_membrane(p)
     p.add_argument("--species", help="membrane species (default: the membrane's only one)")
     p.add_argument("--from", dest="start", type=float, help="pool snapshots from this time (s) [a fifth of the run]")
@@ -63,6 +64,7 @@ def distribution(outdir, membrane_name, species_name, start, bins):
     if start is None:
         start = 0.2 * snapshots[-1].time
     phi, weight, copies = [], [], []
+    last = None
     for s in snapshots:
         m = s.membranes.get(membrane.name)
         if m is None or s.time < start - 1e-12:
@@ -72,6 +74,7 @@ def distribution(outdir, membrane_name, species_name, start, bins):
         phi.append(n * footprint / areas)
         weight.append(areas)
         copies.append(n)
+        last = (s.time, m, phi[-1])
     if not phi:
         raise CortexError(f"{run.trajectory_path}: no snapshot at or after t = {start:g} s")
     used = len(phi)
@@ -90,6 +93,7 @@ def distribution(outdir, membrane_name, species_name, start, bins):
         "separated": bool(np.sum(copies[dense]) > 0.5 * np.sum(copies)),
         "hist": hist,
         "centres": centres,
+        "last": last,  # time, membrane, phi per vertex of the last snapshot used
     }
 
 
@@ -123,13 +127,34 @@ def run(args):
     return 0
 
 
+def draw_map(ax, result, label):
+    """phi per vertex of a run's last snapshot, seen along the coordinate axis in which
+    the membrane is thinnest (a flat patch from above; fig. 3.3a, b)."""
+    time, membrane, phi = result["last"]
+    first, second = sorted(np.argsort(np.ptp(membrane.vertices, axis=0))[1:])
+    xy = membrane.vertices[:, [first, second]]
+    image = ax.tripcolor(xy[:, 0], xy[:, 1], membrane.triangles, np.minimum(phi, 1.0), shading="gouraud",
+                         cmap="viridis", vmin=0.0, vmax=1.0)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    ax.set_title(f"{label}, t = {time:.3g} s", fontsize=8)
+    return image
+
+
 def plot(args, labels, results):
     plt = plotting.pyplot()
     from matplotlib.colors import LogNorm  # with pyplot: reading runs needs no matplotlib
 
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=args.size)
-    cmap = plt.get_cmap("viridis")
     heights = [r["height"] for r in results]
+    weakest, strongest = int(np.argmin(heights)), int(np.argmax(heights))
+    shown = [weakest] if weakest == strongest else [weakest, strongest]
+    fig, axes = plt.subplots(1, 2 + len(shown), figsize=args.size,
+                             gridspec_kw={"width_ratios": [0.8] * len(shown) + [1.0, 1.0]})
+    for k, i in enumerate(shown):
+        image = draw_map(axes[k], results[i], labels[i])
+    fig.colorbar(image, ax=axes[len(shown) - 1], shrink=0.7, label=r"area fraction $\phi_p$")
+    ax, bx = axes[len(shown)], axes[len(shown) + 1]
+    cmap = plt.get_cmap("viridis")
     span = (max(heights) - min(heights)) or 1.0
     for label, r in zip(labels, results):
         ax.semilogy(r["centres"], np.maximum(r["hist"], 1e-5), "o-", ms=3,
