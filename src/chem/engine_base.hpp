@@ -97,7 +97,7 @@ class EngineBase : public ChemistryEngine {
   }
 
   // Whether copies of s interact (setSurfaceInteraction).
-  bool interacting(Index s) const { return !interaction_[s].potential.empty(); }
+  bool interacting(Index s) const { return interacts_[s] != 0; }
   // e^{V_i + R_i − K_ii}: the factor on the unbinding of interacting species s from
   // surface subvolume i (the energy its copy leaves behind).
   double unbindingFactor(Index i, Index s) const;
@@ -219,6 +219,7 @@ class EngineBase : public ChemistryEngine {
   // edge; empty for none) and field R per region-local subvolume.
   std::vector<SurfaceInteraction> interaction_;
   std::vector<std::vector<double>> field_;
+  std::vector<char> interacts_;  // per species: has an interaction (one byte for the hop path)
   // Scratch of interactionChanged: visit marks per subvolume, and the sets it builds.
   std::vector<std::uint32_t> mark_;
   std::uint32_t mark_round_ = 0;

@@ -56,6 +56,7 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   drift_[species].clear();
   interaction_[species] = std::move(interaction);
   field_[species].assign(n, 0.0);
+  interacts_[species] = 1;
   if (!unbinds.empty() && unbinding_.empty()) unbinding_.assign(R_, -1);
   for (Index r : unbinds) unbinding_[r] = species;
   computeHopRates();
