@@ -81,7 +81,10 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
 // Each term's parameters into its own struct (membrane.hpp). How area and volume are
 // held depends on the minimizer: the default relaxation holds them exactly unless a
 // modulus asks for the penalty form; cg and lbfgs have only the penalty forms.
-MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, MinimizerKind minimizer) {
+// `protein_curvature`: the name of a membrane species whose proteins carry a spontaneous
+// curvature (sensing or generating), empty if none.
+MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, MinimizerKind minimizer,
+                                          const std::string& protein_curvature) {
   MembraneMechanics m;
   const Range any{};
   const bool by_shape = minimizer == MinimizerKind::kAuto;
@@ -90,13 +93,17 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
   bending.modulus = r.schedule("bending_modulus", 100.0, Range::nonNegative(), "pN·nm");
   bending.spontaneous_curvature = r.schedule("spontaneous_curvature", 0.0, any, "1/nm");
   // Default as the thesis advises (sec. 2.2.2): the signed estimator where the sign
-  // matters (H0 != 0), the unsigned one otherwise, which resists folded vertices.
-  const char* default_estimator = bending.spontaneous_curvature.isZero() ? "unsigned" : "signed";
-  bending.estimator = r.choice("curvature", default_estimator, {"signed", "unsigned"}) == "signed"
+  // matters (H0 != 0, or proteins with a spontaneous curvature), the unsigned one
+  // otherwise, which resists folded vertices.
+  const bool signs = !bending.spontaneous_curvature.isZero() || !protein_curvature.empty();
+  bending.estimator = r.choice("curvature", signs ? "signed" : "unsigned", {"signed", "unsigned"}) == "signed"
                           ? CurvatureEstimator::kSigned
                           : CurvatureEstimator::kUnsigned;
   if (!bending.spontaneous_curvature.isZero() && bending.estimator == CurvatureEstimator::kUnsigned)
     r.fail("spontaneous_curvature", "needs curvature = \"signed\" (the unsigned estimator has no sign)");
+  if (!protein_curvature.empty() && bending.estimator == CurvatureEstimator::kUnsigned)
+    r.fail("curvature", fmt::format("must be \"signed\": the proteins of species \"{}\" have a spontaneous "
+                                    "curvature (the unsigned estimator has no sign)", protein_curvature));
 
   const char* default_area = by_shape && !r.has("area_modulus") ? "exact" : "global";
   const std::string model = r.choice("area_model", default_area, {"exact", "global", "per_vertex", "none"});
@@ -151,7 +158,11 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   m.name = r.name("name", fmt::format("membrane{}", index));
   readShape(r, m, base_dir);
   // Closedness of a loaded mesh is only known once it is read; sim/ checks it again.
-  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane", minimizer);
+  m.species = readSurfaceSpecies(r);
+  std::string protein_curvature;
+  for (const SurfaceSpeciesConfig& sp : m.species)
+    if (sp.curvature && sp.curvature->spontaneous_curvature != 0.0) protein_curvature = sp.name;
+  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane", minimizer, protein_curvature);
   m.remesh = r.boolean("remesh", false);
   // A loaded mesh has no mesh_size: its sizes default from its own mean edge (sim/).
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
@@ -163,7 +174,6 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
     r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
   if (m.mesh_size > 0 && m.max_size < m.mesh_size)
     r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
-  m.species = readSurfaceSpecies(r);
   for (const SurfaceSpeciesConfig& sp : m.species)
     if (sp.curvature && !(m.mechanics.bending.modulus.at(0.0) > 0.0))
       r.fail("bending_modulus", fmt::format("must be > 0: species \"{}\" senses curvature, which needs the "

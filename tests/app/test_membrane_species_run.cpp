@@ -106,6 +106,12 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
               "interaction = { height = 0.1, range = 18.0 }\ncurvature = { area = 10.0, bending_modulus = 50.0 }\n"
               "density = 0.0 ");
   expectCheckFails(sensing, "membrane.0.species.1.interaction", "cannot be combined");
+  // Proteins with a spontaneous curvature need the signed estimator (the default then).
+  std::string unsigned_h = exampleText();
+  replaceOnce(unsigned_h, "bending_modulus = 100.0", "bending_modulus = 100.0\ncurvature = \"unsigned\"");
+  replaceOnce(unsigned_h, "name = \"M\"",
+              "name = \"M\"\ncurvature = { area = 10.0, bending_modulus = 50.0, spontaneous_curvature = 0.01 }");
+  expectCheckFails(unsigned_h, "membrane.0.curvature", "must be \"signed\"");
   std::string no_range = exampleText();
   replaceOnce(no_range, "name = \"P\"", "name = \"P\"\ninteraction = { height = 0.1, range = 0.0 }");
   expectCheckFails(no_range, "membrane.0.species.0.interaction.range", "");
