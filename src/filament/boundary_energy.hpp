@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "filament/end_load_probe.hpp"
 #include "filament/filament_layout.hpp"
 #include "filament/filament_params.hpp"
 #include "filament/filament_term.hpp"
@@ -15,6 +16,17 @@ namespace cortex {
 double boundaryEnergy(const BoundaryConfig& b, const Vec3& x);
 // -dE/dx for one bead at x (pN): the load the wall puts on a growing tip.
 Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x);
+
+// The walls' push on an end where it now is (end_load_probe.hpp): they never move, so
+// between relaxations the load of an end that grows towards them is exact.
+class WallEndLoads final : public EndLoadProbe {
+ public:
+  explicit WallEndLoads(BoundaryConfig boundary) : boundary_(boundary) {}
+  Vec3 forceAt(const Vec3& point, bool /*plus_end*/) const override { return boundaryForce(boundary_, point); }
+
+ private:
+  BoundaryConfig boundary_;
+};
 
 class BoundaryRepulsionEnergy final : public FilamentTerm {
  public:

@@ -127,10 +127,19 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   }
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);
+    std::vector<const EndLoadProbe*> probes;
     if (!coupling_terms_.empty()) {
       end_loads_ = std::make_unique<MembraneEndLoads>(
           std::vector<const MembraneBeadExclusion*>(coupling_terms_.begin(), coupling_terms_.end()));
-      filament_chemistry_->setEndLoadProbe(end_loads_.get());
+      probes.push_back(end_loads_.get());
+    }
+    if (const auto& boundary = config.filaments->boundary) {
+      wall_loads_ = std::make_unique<WallEndLoads>(*boundary);
+      probes.push_back(wall_loads_.get());
+    }
+    if (!probes.empty()) {
+      end_load_sum_ = std::make_unique<EndLoadSum>(std::move(probes));
+      filament_chemistry_->setEndLoadProbe(end_load_sum_.get());
     }
     feedback_.push_back(
         std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_loads_.get()));

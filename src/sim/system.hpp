@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "chem/chemistry_engine.hpp"
+#include "filament/boundary_energy.hpp"
 #include "filament/filament_chemistry.hpp"
 #include "filament/filament_network.hpp"
 #include "filament/filament_terms.hpp"
@@ -89,7 +90,11 @@ class System {
   std::vector<Body*> bodies_;
   ForceField force_field_;
   std::vector<MembraneBeadExclusion*> coupling_terms_;
-  std::unique_ptr<MembraneEndLoads> end_loads_;  // with coupling terms and filament chemistry
+  // The loads that follow a filament end within a window (filament/end_load_probe.hpp):
+  // membranes' (with coupling terms), walls' (with [boundary]), and their sum.
+  std::unique_ptr<MembraneEndLoads> end_loads_;
+  std::unique_ptr<WallEndLoads> wall_loads_;
+  std::unique_ptr<EndLoadSum> end_load_sum_;
   CompartmentGrid grid_;
   ChemistryModel chemistry_model_;
   std::unique_ptr<FilamentChemistry> filament_chemistry_;
