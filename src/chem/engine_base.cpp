@@ -116,8 +116,6 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
   computeHopRates();
 }
 
-// Unweighted species hop at D / l^2 along every edge of their region (all edges alike);
-// the others get per-edge rates, scaled by a / f_source when confined.
 double EngineBase::bindingWeightSum(Index h, Index r) const {
   double sum = 0.0;
   for (Index j : held_[h]) sum += bindingWeight(j, r);
@@ -144,6 +142,8 @@ Index EngineBase::drawBindingSite(Index h, Index r) {
   return last;  // rounding at the end
 }
 
+// Unweighted species hop at D / l^2 along every edge of their region (all edges alike);
+// the others get per-edge rates, scaled by a / f_source when confined.
 void EngineBase::computeHopRates() {
   const auto regions = static_cast<Index>(graphs_.size());
   std::vector<char> uniform(regions, 1);

@@ -244,20 +244,36 @@ Index NextSubvolumeEngine::pickReaction(Index i, double x) const {
   return -1;
 }
 
-void NextSubvolumeEngine::react(Index i, Index r) {
-  Subvolume& v = sub_[i];
+bool NextSubvolumeEngine::changeLocally(Index i, Index r) {
   int* n = &copies_[static_cast<std::size_t>(i) * S_];
   bool cascades = false;
   for (const SpeciesChange& change : net_.changes[r]) {
     if (change.held) continue;
     checkGrowth(n[change.species], change.delta, i, change.species);
     n[change.species] += change.delta;
-    v.diffusion += change.delta * hopOutOf(i, change.species);
+    sub_[i].diffusion += change.delta * hopOutOf(i, change.species);
     cascades = cascades || !net_.heldReaders[change.species].empty();
   }
   for (Index dependent : net_.affected[r]) setPropensity(i, dependent);
+  return cascades;
+}
+
+void NextSubvolumeEngine::changeHeld(Index h, Index r) {
+  for (const SpeciesChange& change : net_.changes[r]) {
+    if (!change.held) continue;
+    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
+    changeSubvolume(h, [&] { changeCopies(h, change.species, change.delta); });
+  }
+}
+
+void NextSubvolumeEngine::moveInteracting(Index i, Index r) {
   for (const SpeciesChange& change : net_.changes[r])
     if (!change.held && interacting(change.species)) interactionMoved(change.species, i, i);
+}
+
+void NextSubvolumeEngine::react(Index i, Index r) {
+  const bool cascades = changeLocally(i, r);
+  moveInteracting(i, r);
   // What the local changes do to the surface subvolumes i holds, and the held changes of
   // a surface reaction in i's holder (which in turn reach every subvolume it holds).
   if (cascades)
@@ -268,12 +284,7 @@ void NextSubvolumeEngine::react(Index i, Index r) {
           for (Index reader : net_.heldReaders[change.species]) setPropensity(h, reader);
         });
     }
-  for (const SpeciesChange& change : net_.changes[r]) {
-    if (!change.held) continue;
-    const Index h = holder_[i];
-    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
-    changeSubvolume(h, [&] { changeCopies(h, change.species, change.delta); });
-  }
+  changeHeld(holder_[i], r);
 }
 
 // The firing 3D subvolume h carries the aggregated reaction r: it happens in one of the
@@ -281,23 +292,10 @@ void NextSubvolumeEngine::react(Index i, Index r) {
 bool NextSubvolumeEngine::fireBinding(Index h, Index r) {
   const Index j = drawBindingSite(h, r);
   if (j < 0 || !capAccepts(r, j) || !hookAccepts(r, j)) return false;  // a void event
-  for (const SpeciesChange& change : net_.changes[r]) {
-    if (!change.held) continue;
-    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
-    changeCopies(h, change.species, change.delta);
-  }
-  changeSubvolume(j, [&] {
-    int* n = &copies_[static_cast<std::size_t>(j) * S_];
-    for (const SpeciesChange& change : net_.changes[r]) {
-      if (change.held) continue;
-      checkGrowth(n[change.species], change.delta, j, change.species);
-      n[change.species] += change.delta;
-      sub_[j].diffusion += change.delta * hopOutOf(j, change.species);
-    }
-    for (Index dependent : net_.affected[r]) setPropensity(j, dependent);
-  });
-  for (const SpeciesChange& change : net_.changes[r])
-    if (!change.held && interacting(change.species)) interactionMoved(change.species, j, j);
+  changeHeld(h, r);  // h is firing: no rescaling
+  // Binding changes only surface species of j: nothing cascades to other subvolumes.
+  changeSubvolume(j, [&] { changeLocally(j, r); });
+  moveInteracting(j, r);
   return true;
 }
 

@@ -68,6 +68,14 @@ class NextSubvolumeEngine final : public EngineBase {
   void updateHeldReaders(Index i, Index s);
   void fire(Index i, double t);
   Index pickReaction(Index i, double x) const;
+  // Reaction r's changes in subvolume i itself and the propensities there that read them;
+  // true when a changed species is read by the surface subvolumes i holds.
+  bool changeLocally(Index i, Index r);
+  // Reaction r's changes of 3D species in h, the holder of the surface subvolume where it
+  // fired, and everything that reads them.
+  void changeHeld(Index h, Index r);
+  // The fields of the interacting species reaction r changed in subvolume i.
+  void moveInteracting(Index i, Index r);
   void react(Index i, Index r);
   bool fireBinding(Index h, Index r);
   // kMissed: rounding put x past the last channel; kCrowded: the destination is full

@@ -7,6 +7,13 @@
 
 namespace cortex {
 
+Index reverseEdge(const SubvolumeGraph& g, Index from, Index e) {
+  const Index j = g.target[e];
+  const auto end = g.target.begin() + g.start[j + 1];
+  const auto back = std::find(g.target.begin() + g.start[j], end, from);
+  return back == end ? -1 : static_cast<Index>(back - g.target.begin());
+}
+
 void validate(const SubvolumeGraph& g, const std::string& what) {
   auto fail = [&](const std::string& why) { throw InputError(what + ": " + why); };
   const Index n = g.count();
@@ -23,10 +30,10 @@ void validate(const SubvolumeGraph& g, const std::string& what) {
       if (j < 0 || j >= n || j == i) fail("edge " + std::to_string(e) + " leads nowhere");
       if (!(g.hop_length2[e] > 0.0) || !std::isfinite(g.hop_length2[e]))
         fail("edge " + std::to_string(e) + " has no hop length");
-      const auto back = std::find(g.target.begin() + g.start[j], g.target.begin() + g.start[j + 1], i);
-      if (back == g.target.begin() + g.start[j + 1]) fail("edge " + std::to_string(e) + " has no reverse");
+      const Index back = reverseEdge(g, i, e);
+      if (back < 0) fail("edge " + std::to_string(e) + " has no reverse");
       const double forward = g.size[i] / g.hop_length2[e];
-      const double reverse = g.size[j] / g.hop_length2[back - g.target.begin()];
+      const double reverse = g.size[j] / g.hop_length2[back];
       if (std::abs(forward - reverse) > 1e-9 * std::max(forward, reverse))
         fail("edge " + std::to_string(e) + " breaks detailed balance (size / l^2 not symmetric)");
     }

@@ -30,6 +30,9 @@ struct SubvolumeGraph {
   Index numEdges() const { return static_cast<Index>(target.size()); }
 };
 
+// The edge j -> i that reverses edge e = i -> j (i = `from`), or -1 if there is none.
+Index reverseEdge(const SubvolumeGraph& graph, Index from, Index e);
+
 // Throws InputError (prefixed by `what`) unless the arrays are consistent: sizes finite
 // and > 0, edges to other existing subvolumes, squared lengths finite and > 0, every
 // edge with its reverse, size / l^2 symmetric to 1e-9 relative, and a lattice (if

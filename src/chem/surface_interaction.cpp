@@ -45,10 +45,7 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
     throw std::invalid_argument("chemistry engine: an interaction term is not finite");
   for (Index i = 0; i < g.count(); ++i)
     for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
-      const Index j = g.target[e];
-      Index back = -1;
-      for (Index f = g.start[j]; f < g.start[j + 1]; ++f)
-        if (g.target[f] == i) back = f;
+      const Index back = reverseEdge(g, i, e);
       const double a = interaction.pair[e];
       if (back < 0 || std::abs(a - interaction.pair[back]) > 1e-12 * std::max(std::abs(a), 1.0))
         throw std::invalid_argument("chemistry engine: an interaction's pair terms are not symmetric");

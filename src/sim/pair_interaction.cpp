@@ -24,11 +24,8 @@ ChemistryEngine::SurfaceInteraction pairInteraction(const SubvolumeGraph& graph,
   for (Index j = 0; j < graph.count(); ++j) {
     double row = 0.0;
     for (Index e = graph.start[j]; e < graph.start[j + 1]; ++e) {
-      const Index k = graph.target[e];
-      double back = a[e];
-      for (Index f = graph.start[k]; f < graph.start[k + 1]; ++f)
-        if (graph.target[f] == j) back = a[f];
-      const double ajk = 0.5 * (a[e] + back);
+      const Index k = graph.target[e], back = reverseEdge(graph, j, e);
+      const double ajk = 0.5 * (a[e] + (back < 0 ? a[e] : a[back]));
       out.pair[e] = m.mu2 * ajk / (graph.size[j] * graph.size[k]);
       row += ajk;
     }
