@@ -262,10 +262,13 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   rep.force_tolerance = s.force_tolerance > 0 ? s.force_tolerance : naturalForceTolerance(m, t);
   const bool closed = m.isClosed();
   const bool exact_area = m.mechanics().area.model == AreaModel::kExact;
-  // A reduced volume of 1 asks for the sphere, the largest volume the area allows (and
-  // more than a discrete mesh can enclose): no volume constraint is needed for it.
-  const bool exact_volume = closed && m.mechanics().volume.exact &&
-                            m.targetVolume(t) < sphereVolumeOfArea(m.targetArea(t)) * (1.0 - 1e-12);
+  // With the area held exactly, a reduced volume of 1 asks for the sphere, the largest
+  // volume the area allows (and more than a discrete mesh can enclose): no volume
+  // constraint is needed for it. Without an exact area the volume is held whatever it
+  // is (a tension then meets the pressure of the held volume, as in a tense vesicle).
+  const bool sphere_by_area =
+      exact_area && m.targetVolume(t) >= sphereVolumeOfArea(m.targetArea(t)) * (1.0 - 1e-12);
+  const bool exact_volume = closed && m.mechanics().volume.exact && !sphere_by_area;
   const std::vector<EnergyTerm*> terms = field.termsOf(m.name());
   const TermScales scales = scalesOf(m, terms);
   const double area_target = m.targetArea(t), volume_target = closed ? m.targetVolume(t) : 0.0;
