@@ -45,11 +45,15 @@ struct FilamentInit {
   // random: also wholly inside this closed membrane, beads at least the membrane–filament
   // cut-off from it (empty: anywhere in the region).
   std::string inside;
-  // bundle: parallel filaments on a hexagonal lattice around `center`, axis `direction`,
+  // bundle: filaments on a hexagonal lattice around `center`, axis `direction`,
   // neighbours `spacing` nm apart; filaments are centred on `center` along the axis.
+  // Mixed polarity: every second filament of the lattice walk points against
+  // `direction` (the lattice's rings then alternate, so ring neighbours are
+  // antiparallel), a bundle that pushes at both of its ends.
   Vec3 center = Vec3::Zero();
   Vec3 direction = Vec3::UnitX();
   double spacing = 10.0;
+  bool mixed_polarity = false;
   // Hold the minus-end bead fixed in space (an anchored filament; its minus end is then
   // inert, neither growing nor shrinking).
   bool fixed_minus_end = false;

@@ -79,13 +79,14 @@ void placeBundle(const FilamentInit& init, std::size_t entry, const FilamentType
   const auto lattice = hexagonalLattice(init.count);
   for (std::size_t n = 0; n < lattice.size(); ++n) {
     const Vec3 point = init.center + init.spacing * (lattice[n][0] * e1 + lattice[n][1] * e2);
-    const Vec3 minus_end = point - axis * (length / 2);
-    if (!fits(walls, minus_end, axis, length))
+    const Vec3 direction = init.mixed_polarity && n % 2 == 1 ? Vec3(-axis) : axis;
+    const Vec3 minus_end = point - direction * (length / 2);
+    if (!fits(walls, minus_end, direction, length))
       throw InputError(fmt::format("filaments.{}: bundle filament {} of {} (lattice point [{:g}, {:g}, {:g}] nm, "
                                    "{:g} nm long) does not fit inside the boundary; move center, or reduce "
                                    "count, spacing or length",
                                    entry, n, init.count, point.x(), point.y(), point.z(), length));
-    out.push_back({init.type_index, minus_end, axis, monomers, init.fixed_minus_end, init.clamped_minus_end});
+    out.push_back({init.type_index, minus_end, direction, monomers, init.fixed_minus_end, init.clamped_minus_end});
   }
 }
 

@@ -137,8 +137,9 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
       f.direction = d.normalized();
     }
     f.spacing = r.number("spacing", f.spacing, Range::positive(), "nm");
+    f.mixed_polarity = r.choice("polarity", "parallel", {"parallel", "mixed"}) == "mixed";
   } else {
-    for (const char* k : {"center", "direction", "spacing"})
+    for (const char* k : {"center", "direction", "spacing", "polarity"})
       if (r.has(k)) r.fail(k, "is for placement = \"bundle\"");
     if (const auto g = r.table("region")) {
       const Vec3 lo = readVec(*g, "min", "nm"), hi = readVec(*g, "max", "nm");

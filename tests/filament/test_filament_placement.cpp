@@ -187,6 +187,36 @@ TEST(FilamentPlacement, BundleIsAHexagonalLatticeOfParallelFilaments) {
   }
 }
 
+// A mixed bundle has the same lattice, half its filaments reversed in place: ring
+// neighbours antiparallel, every filament still centred, as many plus ends at each end
+// as the count allows.
+TEST(FilamentPlacement, MixedBundleAlternatesAroundEachRing) {
+  FilamentConfig c = oneType();
+  FilamentInit f = randomFilaments(19, 300.0);
+  f.placement = FilamentInit::Placement::kBundle;
+  f.center = Vec3(500, 400, 600);
+  f.direction = Vec3(1, 2, 2).normalized();
+  f.spacing = 12.0;
+  FilamentConfig parallel = c;
+  parallel.initial.push_back(f);
+  f.mixed_polarity = true;
+  c.initial.push_back(f);
+  const auto seeds = place(c), reference = place(parallel);
+  ASSERT_EQ(seeds.size(), 19u);
+  const double length = seeds[0].monomers * 2.7;
+  auto midpoint = [&](const FilamentSeed& s) -> Vec3 { return s.minus_end + s.direction * length / 2; };
+  int forward = 0;
+  for (std::size_t n = 0; n < seeds.size(); ++n) {
+    const double sign = seeds[n].direction.dot(f.direction);
+    EXPECT_NEAR(std::abs(sign), 1.0, 1e-12);
+    forward += sign > 0;
+    EXPECT_NEAR((midpoint(seeds[n]) - midpoint(reference[n])).norm(), 0.0, 1e-9);  // same lattice point
+  }
+  EXPECT_EQ(forward, 10);  // the centre, then 3 of 6 and 6 of 12 in the rings
+  for (std::size_t n = 2; n < 7; ++n)  // first ring: consecutive lattice points are neighbours
+    EXPECT_LT(seeds[n].direction.dot(seeds[n - 1].direction), 0.0);
+}
+
 TEST(FilamentPlacement, FilamentsThatDoNotFitAreInputErrors) {
   FilamentConfig c = oneType();
   c.boundary = BoundaryConfig{};

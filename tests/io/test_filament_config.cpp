@@ -104,6 +104,8 @@ TEST(FilamentConfig, ValidConfigParsesWithValuesAndDefaults) {
   EXPECT_TRUE(f.initial[1].direction.isApprox(Vec3::UnitZ()));
   EXPECT_TRUE(f.initial[1].center.isApprox(Vec3(500, 500, 500)));
   EXPECT_DOUBLE_EQ(f.initial[1].spacing, 12.0);
+  EXPECT_FALSE(f.initial[1].mixed_polarity);
+  EXPECT_TRUE(parse(kValid, {"filaments.1.polarity=\"mixed\""}).filaments->initial[1].mixed_polarity);
 
   ASSERT_TRUE(f.boundary);
   EXPECT_EQ(f.boundary->shape, BoundaryConfig::Shape::kBox);
@@ -223,6 +225,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadOverride{"filaments.1.direction=[0.0, 0.0, 0.0]", "filaments.1.direction"},
         BadOverride{"filaments.1.direction=[0.0, 1.0]", "filaments.1.direction"},
         BadOverride{"filaments.1.spacing=0.0", "filaments.1.spacing"},
+        BadOverride{"filaments.1.polarity=\"both\"", "filaments.1.polarity"},
+        BadOverride{"filaments.0.polarity=\"mixed\"", "filaments.0.polarity"},
         BadOverride{"filaments.1.region={ min = [0.0, 0.0, 0.0], max = [1.0, 1.0, 1.0] }", "filaments.1.region"},
         BadOverride{"filaments.1.lenght=3.0", "filaments.1.lenght"},
         BadOverride{"boundary.shape=\"cube\"", "boundary.shape"},
