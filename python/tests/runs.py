@@ -186,6 +186,50 @@ direction = [0.0, 0.0, 1.0]
 fixed_minus_end = true
 """
 
+# A mixed bundle of 6 filaments pushing both poles of a small tense vesicle
+# (examples/vesicle_tubes.toml, small and short): 5 snapshots of poles pushed out.
+TUBES = """
+[simulation]
+seed = 3
+end_time = 0.2
+chemistry_window = 0.01
+snapshot_interval = 0.05
+
+[compartments]
+size = 250.0
+shape = [4, 2, 2]
+
+[[species]]
+name = "G"
+diffusion = 2.0e7
+copies = 150
+inside = "vesicle"
+
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+center = [500.0, 250.0, 250.0]
+radius = 120.0
+mesh_size = 30.0
+bending_modulus = 50.0
+tension = 0.05
+area_model = "none"
+target_volume = 7.238e6
+remesh = true
+
+[[filament_type]]
+name = "actin"
+monomer_species = "G"
+
+[[filaments]]
+count = 6
+length = 180.0
+placement = "bundle"
+polarity = "mixed"
+center = [500.0, 250.0, 250.0]
+direction = [1.0, 0.0, 0.0]
+"""
+
 # Membrane proteins starting left of a 1 k_BT Gaussian barrier on a 600 nm patch
 # (examples/membrane_barrier.toml, small and short): 6 snapshots as copies cross it.
 BARRIER = """
@@ -315,7 +359,7 @@ shape = [1, 1, 1]
 """
 
 CONFIGS = {"vesicle": VESICLE, "patch": PATCH, "filaments": FILAMENTS, "species": SPECIES, "bundle": BUNDLE,
-           "barrier": BARRIER, "sorting": SORTING, "llps": LLPS}
+           "barrier": BARRIER, "sorting": SORTING, "llps": LLPS, "tubes": TUBES}
 
 
 def root():

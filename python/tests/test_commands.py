@@ -5,6 +5,8 @@ import os
 import tempfile
 import unittest
 
+import numpy as np
+
 import cortex
 from cortex import geometry
 from tests import runs
@@ -15,7 +17,7 @@ class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle", "barrier", "sorting",
-                                                  "llps")}
+                                                  "llps", "tubes")}
         cls.tmp = tempfile.TemporaryDirectory()
 
     @classmethod
@@ -131,6 +133,61 @@ class CommandsTest(unittest.TestCase):
         for t, height, tip, length in rows:
             self.assertLess(tip, height)
         self.assertRegex(stdout, r"a: height [0-9.]+ -> [0-9.]+ nm, growth rate over the second half [0-9.]+ nm/s")
+
+    def test_tubes(self):
+        t = self.runs["tubes"]
+        stdout = self.ok("tubes", t, t, "--labels", "a,b", "--csv", self.out("t.csv"), "-o", self.out("t.png"))
+        assert_png(self, self.out("t.png"))
+        with open(self.out("t.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,time_s,body_radius_nm,plus_length_nm,plus_radius_nm,minus_length_nm,"
+                                   "minus_radius_nm")
+        self.assertEqual(len(lines), 1 + 2 * len(cortex.open(t)))
+        # The bundle pushes both poles out of the round vesicle, symmetrically.
+        first, last = ([float(v) for v in lines[k].split(",")[1:]] for k in (1, len(cortex.open(t))))
+        self.assertLess(abs(first[2]), 3.0)
+        self.assertGreater(last[2], 10.0)
+        self.assertLess(abs(last[2] - last[4]), 0.2 * last[2])
+        self.assertIn("(√(κ/2γ) = 22.4 nm)", stdout)
+
+    def test_tubes_measure_a_surface_of_revolution(self):
+        # A sphere of radius 200 nm with tubes of radius 25 nm reaching 150 nm beyond it
+        # at both poles, along a tilted axis: the command's measurement returns the body
+        # radius, both lengths and both radii (to the mesh's resolution).
+        from cortex.commands import tubes
+        body, radius, reach = 200.0, 25.0, 350.0
+        rings, around = 400, 64
+        s = np.linspace(-reach, reach, rings)
+        rho = np.where(np.abs(s) < np.sqrt(body**2 - radius**2), np.sqrt(np.maximum(body**2 - s**2, 0)), radius)
+        axis = np.array([1.0, 2.0, 2.0]) / 3.0
+        e1 = np.cross(axis, [0.0, 0.0, 1.0])
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(axis, e1)
+        phi = np.linspace(0, 2 * np.pi, around, endpoint=False)
+        centre = np.array([500.0, 400.0, 300.0])
+        points = [centre + si * axis + ri * (np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2)
+                  for si, ri in zip(s, rho)]
+        vertices = np.vstack(points + [centre - reach * axis, centre + reach * axis])
+        low, high = len(vertices) - 2, len(vertices) - 1
+        triangles = []
+        for i in range(rings - 1):
+            for j in range(around):
+                a, b = i * around + j, i * around + (j + 1) % around
+                triangles += [[a, b, b + around], [a, b + around, a + around]]
+        for j in range(around):
+            triangles += [[low, (j + 1) % around, j],
+                          [high, (rings - 1) * around + j, (rings - 1) * around + (j + 1) % around]]
+        membrane = cortex.snapshot.Membrane("v", vertices, np.array(triangles), np.zeros(len(vertices)))
+        volume, _ = tubes.enclosed(membrane.vertices, membrane.triangles)
+        self.assertGreater(volume, 0)  # outward orientation, as cortex writes meshes
+        measured = tubes.shape(membrane, -axis)
+        self.assertAlmostEqual(measured[0], body, delta=1.0)
+        for length, r in (measured[1:3], measured[3:5]):
+            self.assertAlmostEqual(length, reach - body, delta=2.0)
+            self.assertAlmostEqual(r, radius, delta=0.1)
+        code, _, stderr = command("tubes", self.runs["vesicle"])
+        self.assertEqual(code, 2)
+        self.assertIn("has no filaments", stderr)
 
     def test_mesh_resolution(self):
         stdout = self.ok("mesh-resolution", self.runs["vesicle"], "--mesh-size", "100", "-o", self.out("res.png"))

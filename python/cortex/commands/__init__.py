@@ -1,7 +1,7 @@
 """The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
 run(args) -> exit code."""
 
-from . import barrier, filaments, info, llps, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting
+from . import barrier, filaments, info, llps, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting, tubes
 
 # Command name -> module, in the order `--help` lists them.
 COMMANDS = {
@@ -12,6 +12,7 @@ COMMANDS = {
     "movie": movie,
     "rg": rg,
     "protrusion": protrusion,
+    "tubes": tubes,
     "barrier": barrier,
     "sorting": sorting,
     "llps": llps,

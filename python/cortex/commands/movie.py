@@ -47,6 +47,8 @@ def add_arguments(p):
     p.add_argument("--cutaway", action="store_true",
                    help="leave out the near half of each membrane (the triangles between its centre and "
                         "the viewer), to see filaments inside a vesicle")
+    p.add_argument("--zoom", type=float, default=1.25,
+                   help="3D axes zoom (default 1.25; below 1 when a long shape leaves the frame)")
 
 
 class Scene:
@@ -75,6 +77,7 @@ class Scene:
         self.limit = args.clim or max(limits, default=1.0)
         self.norm = plotting.curvature_norm(self.limit)
         self.cmap = plotting.pyplot().get_cmap(args.cmap)
+        self.zoom = args.zoom
         self.view = (args.elev, args.azim)
         self.cutaway = args.cutaway
 
@@ -97,7 +100,7 @@ class Scene:
         if f is not None:
             plotting.add_filaments(ax, f)
             parts.append(f"{len(f)} filaments, {len(f.linkers)} linkers, {len(f.motors)} motors")
-        plotting.set_limits(ax, self.lo, self.hi, zoom=1.25)
+        plotting.set_limits(ax, self.lo, self.hi, zoom=self.zoom)
         ax.view_init(*self.view)
         ax.set_axis_off()
         ax.set_title(separator.join(parts), fontsize=8)
