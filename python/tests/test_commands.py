@@ -13,6 +13,32 @@ from tests import runs
 from tests.helpers import REPOSITORY, assert_png, command, python
 
 
+def surface_of_revolution(body, radius, reach, axis, centre, rings=400, around=64):
+    """A closed, outward-oriented mesh: a sphere of radius `body` with tubes of `radius`
+    out to `reach` from the centre along ±axis (no tubes when radius = body = reach)."""
+    s = np.linspace(-reach, reach, rings)
+    sphere = np.sqrt(np.maximum(body**2 - s**2, 0.0))
+    rho = np.maximum(sphere, radius) if radius < body else sphere
+    e1 = np.cross(axis, [0.0, 0.0, 1.0] if abs(axis[2]) < 0.9 else [1.0, 0.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(axis, e1)
+    phi = np.linspace(0, 2 * np.pi, around, endpoint=False)
+    points = [centre + si * axis + ri * (np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2)
+              for si, ri in zip(s[1:-1], rho[1:-1])]
+    vertices = np.vstack(points + [centre - reach * axis, centre + reach * axis])
+    inner = rings - 2
+    low, high = len(vertices) - 2, len(vertices) - 1
+    triangles = []
+    for i in range(inner - 1):
+        for j in range(around):
+            a, b = i * around + j, i * around + (j + 1) % around
+            triangles += [[a, b, b + around], [a, b + around, a + around]]
+    for j in range(around):
+        triangles += [[low, (j + 1) % around, j],
+                      [high, (inner - 1) * around + j, (inner - 1) * around + (j + 1) % around]]
+    return cortex.snapshot.Membrane("v", vertices, np.array(triangles), np.zeros(len(vertices)))
+
+
 class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -150,34 +176,40 @@ class CommandsTest(unittest.TestCase):
         self.assertLess(abs(last[2] - last[4]), 0.2 * last[2])
         self.assertIn("(√(κ/2γ) = 22.4 nm)", stdout)
 
+    def test_lining(self):
+        # On a sphere of 200 nm: a filament 10 nm under the membrane along it counts as
+        # near and parallel, one along a radius from the centre as far; the sphere is
+        # smooth. Then the command on a run, with its table and plot.
+        from types import SimpleNamespace
+
+        from cortex.commands import lining
+        membrane = surface_of_revolution(body=200.0, radius=200.0, reach=200.0, axis=np.array([0.0, 0.0, 1.0]),
+                                         centre=np.zeros(3))
+        along = np.array([[190.0, y, 0.0] for y in np.linspace(-20.0, 20.0, 5)])
+        radial = np.array([[0.0, 0.0, z] for z in np.linspace(0.0, 100.0, 3)])
+        near, cos = lining.lining(membrane, SimpleNamespace(polylines=[along, radial]), 50.0)
+        self.assertAlmostEqual(near, 40.0 / 140.0, places=12)
+        self.assertLess(cos, 0.1)
+        excess, spread = lining.roughness(membrane)
+        self.assertLess(abs(excess), 1e-3)
+        self.assertLess(spread, 1e-3)
+        t = self.runs["tubes"]
+        stdout = self.ok("lining", t, "--within", "60", "--csv", self.out("l.csv"), "-o", self.out("l.png"))
+        assert_png(self, self.out("l.png"))
+        with open(self.out("l.csv")) as fh:
+            lines = fh.read().splitlines()
+        self.assertEqual(lines[0], "run,time_s,near_fraction,near_mean_abs_cos,excess_area,radius_sd_over_mean")
+        self.assertEqual(len(lines), 1 + len(cortex.open(t)))
+        self.assertIn("of the filament length within 60 nm of the membrane", stdout)
+
     def test_tubes_measure_a_surface_of_revolution(self):
         # A sphere of radius 200 nm with tubes of radius 25 nm reaching 150 nm beyond it
         # at both poles, along a tilted axis: the command's measurement returns the body
         # radius, both lengths and both radii (to the mesh's resolution).
         from cortex.commands import tubes
         body, radius, reach = 200.0, 25.0, 350.0
-        rings, around = 400, 64
-        s = np.linspace(-reach, reach, rings)
-        rho = np.where(np.abs(s) < np.sqrt(body**2 - radius**2), np.sqrt(np.maximum(body**2 - s**2, 0)), radius)
         axis = np.array([1.0, 2.0, 2.0]) / 3.0
-        e1 = np.cross(axis, [0.0, 0.0, 1.0])
-        e1 /= np.linalg.norm(e1)
-        e2 = np.cross(axis, e1)
-        phi = np.linspace(0, 2 * np.pi, around, endpoint=False)
-        centre = np.array([500.0, 400.0, 300.0])
-        points = [centre + si * axis + ri * (np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2)
-                  for si, ri in zip(s, rho)]
-        vertices = np.vstack(points + [centre - reach * axis, centre + reach * axis])
-        low, high = len(vertices) - 2, len(vertices) - 1
-        triangles = []
-        for i in range(rings - 1):
-            for j in range(around):
-                a, b = i * around + j, i * around + (j + 1) % around
-                triangles += [[a, b, b + around], [a, b + around, a + around]]
-        for j in range(around):
-            triangles += [[low, (j + 1) % around, j],
-                          [high, (rings - 1) * around + j, (rings - 1) * around + (j + 1) % around]]
-        membrane = cortex.snapshot.Membrane("v", vertices, np.array(triangles), np.zeros(len(vertices)))
+        membrane = surface_of_revolution(body, radius, reach, axis, centre=np.array([500.0, 400.0, 300.0]))
         volume, _ = tubes.enclosed(membrane.vertices, membrane.triangles)
         self.assertGreater(volume, 0)  # outward orientation, as cortex writes meshes
         measured = tubes.shape(membrane, -axis)

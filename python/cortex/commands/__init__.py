@@ -1,7 +1,8 @@
 """The commands of `python3 -m cortex`, one module each: HELP, add_arguments(parser),
 run(args) -> exit code."""
 
-from . import barrier, filaments, info, llps, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting, tubes
+from . import (barrier, filaments, info, lining, llps, membrane, mesh_resolution, movie, plot, protrusion, rg, sorting,
+               tubes)
 
 # Command name -> module, in the order `--help` lists them.
 COMMANDS = {
@@ -13,6 +14,7 @@ COMMANDS = {
     "rg": rg,
     "protrusion": protrusion,
     "tubes": tubes,
+    "lining": lining,
     "barrier": barrier,
     "sorting": sorting,
     "llps": llps,
