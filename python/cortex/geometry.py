@@ -14,6 +14,14 @@ def area_volume(vertices, triangles):
     return float(area), float(volume)
 
 
+def volume_centroid(vertices, triangles):
+    """Enclosed volume (nm^3) and its centroid of a closed, outward-oriented mesh
+    (tetrahedra on the origin)."""
+    a, b, c = (vertices[triangles[:, k]] for k in range(3))
+    volumes = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
+    return float(volumes.sum()), ((a + b + c) / 4.0 * volumes[:, None]).sum(axis=0) / volumes.sum()
+
+
 def reduced_volume(area, volume):
     """v = 6 sqrt(pi) V / A^(3/2): 1 for a sphere."""
     return 6.0 * math.sqrt(math.pi) * volume / area ** 1.5 if area > 0 else float("nan")

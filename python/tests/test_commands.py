@@ -210,7 +210,7 @@ class CommandsTest(unittest.TestCase):
         body, radius, reach = 200.0, 25.0, 350.0
         axis = np.array([1.0, 2.0, 2.0]) / 3.0
         membrane = surface_of_revolution(body, radius, reach, axis, centre=np.array([500.0, 400.0, 300.0]))
-        volume, _ = tubes.enclosed(membrane.vertices, membrane.triangles)
+        volume, _ = geometry.volume_centroid(membrane.vertices, membrane.triangles)
         self.assertGreater(volume, 0)  # outward orientation, as cortex writes meshes
         measured = tubes.shape(membrane, -axis)
         self.assertAlmostEqual(measured[0], body, delta=1.0)
@@ -220,6 +220,10 @@ class CommandsTest(unittest.TestCase):
         code, _, stderr = command("tubes", self.runs["vesicle"])
         self.assertEqual(code, 2)
         self.assertIn("has no filaments", stderr)
+        for name in ("tubes", "lining"):
+            code, _, stderr = command(name, self.runs["bundle"])  # a patch
+            self.assertEqual(code, 2)
+            self.assertIn("membrane 'patch' is open: this measures a vesicle", stderr)
 
     def test_mesh_resolution(self):
         stdout = self.ok("mesh-resolution", self.runs["vesicle"], "--mesh-size", "100", "-o", self.out("res.png"))

@@ -12,8 +12,9 @@ a sphere).
 
 import numpy as np
 
+from .. import geometry
 from . import common
-from .tubes import enclosed
+from .tubes import closed_membrane
 
 HELP = "filaments lining a vesicle: share of length near the membrane, its alignment, the membrane's roughness"
 
@@ -69,9 +70,8 @@ def lining(membrane, filaments, within):
 def roughness(membrane):
     """(excess area over the sphere of the enclosed volume, sd/mean of the vertices'
     distances from the volume's centroid)."""
-    volume, centre = enclosed(membrane.vertices, membrane.triangles)
-    a, b, c = (membrane.vertices[membrane.triangles[:, k]] for k in range(3))
-    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
+    volume, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
+    area, _ = geometry.area_volume(membrane.vertices, membrane.triangles)
     radius = (3 * abs(volume) / (4 * np.pi)) ** (1 / 3)
     r = np.linalg.norm(membrane.vertices - centre, axis=1)
     return float(area / (4 * np.pi * radius**2) - 1), float(r.std() / r.mean())
@@ -79,7 +79,7 @@ def roughness(membrane):
 
 def table(outdir, membrane_name, within):
     run = common.open_run(outdir)
-    membrane = common.membranes_of(run.snapshot(0), membrane_name)[0]
+    membrane = closed_membrane(run, membrane_name)
     rows = []
     for s in run.snapshots():
         m, f = s.membranes.get(membrane.name), common.filaments_of(s)

@@ -1,10 +1,11 @@
 """Tubes pulled out of a vesicle by a filament bundle (thesis fig. 2.4b). Per snapshot,
 along the axis of the filaments (the principal axis of their beads; the bundle may turn
-with the vesicle) through the centroid of the enclosed volume: the body's radius at the equator and, at each pole, the
-protrusion's length beyond the body and its radius halfway along it. A tube is a
-protrusion much narrower than the body; a vesicle merely stretched into a prolate shape
-has protrusions as wide as itself. With a `tension` γ and `bending_modulus` κ in the
-membrane's config, the radius of a tube at that tension, √(κ/2γ), is printed beside.
+with the vesicle) through the centroid of the enclosed volume: the body's radius at the
+equator and, at each pole, the protrusion's length beyond the body and its median
+radius over the middle third of that length. A tube is a protrusion much narrower than
+the body; a vesicle merely stretched into a prolate shape has protrusions as wide as
+itself. With a `tension` γ and `bending_modulus` κ in the membrane's config, the radius
+of a tube at that tension, √(κ/2γ), is printed beside.
 
   tubes OUT                                  table
   tubes OUT -o tubes.png --csv tubes.csv     plot the tube lengths, write the table
@@ -15,6 +16,7 @@ import tomllib
 
 import numpy as np
 
+from .. import geometry
 from ..errors import CortexError
 from . import common
 
@@ -31,13 +33,6 @@ def add_arguments(p):
     p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
     p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
     p.add_argument("--title", help="figure title")
-
-
-def enclosed(vertices, triangles):
-    """(volume, its centroid) of a closed, outward-oriented mesh (tetrahedra on the origin)."""
-    a, b, c = (vertices[triangles[:, k]] for k in range(3))
-    volumes = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
-    return volumes.sum(), ((a + b + c) / 4.0 * volumes[:, None]).sum(axis=0) / volumes.sum()
 
 
 def bundle_axis(filaments, where):
@@ -59,13 +54,21 @@ def pole(along, across, body_radius):
 
 
 def shape(membrane, axis):
-    _, centre = enclosed(membrane.vertices, membrane.triangles)
+    _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
     along = (membrane.vertices - centre) @ axis
     across = np.linalg.norm(membrane.vertices - centre - np.outer(along, axis), axis=1)
     # The body's radius: at the vertices nearest the equatorial plane (1%, at least 8).
     equator = np.argsort(np.abs(along))[:max(8, len(along) // 100)]
     body = float(np.median(across[equator]))
     return [body, *pole(along, across, body), *pole(-along, across, body)]
+
+
+def closed_membrane(run, name):
+    """The first snapshot's membrane (the one named, or the first), which must be closed."""
+    membrane = common.membranes_of(run.snapshot(0), name)[0]
+    if not geometry.is_closed(membrane.triangles):
+        raise CortexError(f"{run.trajectory_path}: membrane '{membrane.name}' is open: this measures a vesicle")
+    return membrane
 
 
 def tube_radius_of_config(run, name):
@@ -80,7 +83,7 @@ def tube_radius_of_config(run, name):
 
 def table(outdir, membrane_name):
     run = common.open_run(outdir)
-    membrane = common.membranes_of(run.snapshot(0), membrane_name)[0]
+    membrane = closed_membrane(run, membrane_name)
     rows = []
     for s in run.snapshots():
         m = s.membranes.get(membrane.name)
