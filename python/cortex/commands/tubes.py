@@ -44,9 +44,9 @@ def bundle_axis(filaments, where):
 
 
 def pole(along, across, body_radius):
-    """(length beyond the body, radius halfway along) of the protrusion at the pole where
-    `along` is largest; the radius is nan when fewer than 3 vertices lie in the middle
-    third of the protrusion."""
+    """(length beyond the body, median radius over its middle third) of the protrusion at
+    the pole where `along` is largest; the radius is nan when fewer than 3 vertices lie
+    in that third."""
     length = float(along.max() - body_radius)
     middle = (along > body_radius + length / 3) & (along < body_radius + 2 * length / 3)
     radius = float(np.median(across[middle])) if length > 0 and middle.sum() >= 3 else math.nan
@@ -54,6 +54,7 @@ def pole(along, across, body_radius):
 
 
 def shape(membrane, axis):
+    """[body radius, + pole length, + pole radius, − pole length, − pole radius], nm."""
     _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
     along = (membrane.vertices - centre) @ axis
     across = np.linalg.norm(membrane.vertices - centre - np.outer(along, axis), axis=1)
@@ -72,12 +73,14 @@ def closed_membrane(run, name):
 
 
 def tube_radius_of_config(run, name):
-    """√(κ/2γ) of membrane `name` from the stored config, or None without a tension."""
+    """√(κ/2γ) of membrane `name` from the stored config, or None without a constant
+    tension (none, or a schedule)."""
     if run.config is None:
         return None
     for m in tomllib.loads(run.config).get("membrane", []):
-        if m.get("name") == name and m.get("tension", 0.0) > 0:
-            return math.sqrt(m.get("bending_modulus", 100.0) / (2 * m["tension"]))
+        tension, kappa = m.get("tension", 0.0), m.get("bending_modulus", 100.0)
+        if m.get("name") == name and isinstance(tension, float) and tension > 0 and isinstance(kappa, float):
+            return math.sqrt(kappa / (2 * tension))
     return None
 
 
