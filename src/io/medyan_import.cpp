@@ -71,9 +71,9 @@ class Translator {
   std::ostringstream toml_;  // the config, section by section in the order run() calls them
 
   // Geometry (compartments).
-  double compartment_size_ = 0;          // nm
+  double compartment_size_ = 0;            // nm
   std::array<double, 3> shape_{}, box_{};  // compartments per axis; the grid's extent, nm
-  double per_uM_ = 0;                    // copies per µM in one compartment
+  double per_uM_ = 0;                      // copies per µM in one compartment
   // The chemistry file's species and reactions.
   std::map<std::string, Species> species_;
   std::vector<std::string> diffusing_order_;
@@ -115,6 +115,8 @@ class Translator {
   void requireSpecies(const Entry& e, const Ref& r, std::initializer_list<const char*> kinds) const;
   void setMonomer(const Entry& e, const std::string& name);
   bool filamentTypeOk(const Entry& e, const Reaction& r);
+  // Entry i of a list keyword (one value per linker or motor type), or nothing where
+  // the list is shorter (value() would call that missing).
   std::optional<double> listValue(const char* key, std::size_t i) {
     const Entry* e = find(key);
     if (!e || i >= e->values.size()) return std::nullopt;
