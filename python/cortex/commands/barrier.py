@@ -21,15 +21,10 @@ COLUMNS = ["time_s", "fraction", "right", "total"]
 
 
 def add_arguments(p):
-    common.add_outdirs(p, many=True)
-    common.add_out(p, "PNG to write (no plot without it)")
-    common.add_figure(p, "6,4", 100)
+    common.add_runs_over_time(p, "PNG to write (no plot without it)")
     common.add_membrane(p)
     p.add_argument("--species", help="membrane species (default: the membrane's only one)")
     p.add_argument("--split", type=float, help="x (nm) past which copies count (default: the membrane's mid-x)")
-    p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
-    p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
-    p.add_argument("--title", help="figure title")
 
 
 def table(outdir, membrane_name, species_name, split):

@@ -25,6 +25,18 @@ def add_snapshot(parser, default):
                              f"first, last, or all (default: {default})")
 
 
+def add_runs_over_time(parser, what):
+    """The flags of a command that tabulates runs over time and may plot them: the
+    output folders, -o (a PNG: `what`), figure size and resolution, legend labels, a CSV
+    of the tables and a title; the command adds its own."""
+    add_outdirs(parser, many=True)
+    add_out(parser, what)
+    add_figure(parser, "6,4", 100)
+    parser.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
+    parser.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
+    parser.add_argument("--title", help="figure title")
+
+
 def add_membrane(parser):
     parser.add_argument("--membrane", metavar="NAME", help="membrane name (default: every membrane "
                         "where a picture can hold several, else the first)")

@@ -22,14 +22,9 @@ COLUMNS = ["time_s", "near_fraction", "near_mean_abs_cos", "excess_area", "radiu
 
 
 def add_arguments(p):
-    common.add_outdirs(p, many=True)
-    common.add_out(p, "PNG of the near fraction to write (no plot without it)")
-    common.add_figure(p, "6,4", 100)
+    common.add_runs_over_time(p, "PNG of the near fraction to write (no plot without it)")
     common.add_membrane(p)
     p.add_argument("--within", type=float, default=50.0, help="distance from the membrane, nm (default 50)")
-    p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
-    p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
-    p.add_argument("--title", help="figure title")
 
 
 def vertex_normals(vertices, triangles):

@@ -22,13 +22,8 @@ COLUMNS = ["time_s", "height_nm", "tip_nm", "filament_length_nm"]
 
 
 def add_arguments(p):
-    common.add_outdirs(p, many=True)
-    common.add_out(p, "PNG to write (no plot without it)")
-    common.add_figure(p, "6,4", 100)
+    common.add_runs_over_time(p, "PNG to write (no plot without it)")
     common.add_membrane(p)
-    p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
-    p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
-    p.add_argument("--title", help="figure title")
 
 
 def axis_of(vertices, growth):

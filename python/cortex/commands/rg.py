@@ -26,17 +26,12 @@ COLUMNS = ["time_s", "rg_nm", "rg_rel", "filaments", "beads", "linkers", "motors
 
 
 def add_arguments(p):
-    common.add_outdirs(p, many=True)
-    common.add_out(p, "PNG to write (no plot without it)")
-    common.add_figure(p, "6,4", 100)
-    p.add_argument("--labels", metavar="LIST", help="comma-separated legend labels, one per run")
+    common.add_runs_over_time(p, "PNG to write (no plot without it)")
     p.add_argument("--bound", action="store_true", help="second panel: bound linkers and motors")
     p.add_argument("--normalize", action="store_true", help="plot Rg/Rg(0) instead of Rg")
     p.add_argument("--type", type=int, help="only filaments of this type index")
     p.add_argument("--per-length", action="store_true",
                    help="weight cylinder midpoints by cylinder length instead of beads equally")
-    p.add_argument("--csv", metavar="FILE", help="also write the tables as CSV (run column first)")
-    p.add_argument("--title", help="figure title")
     p.add_argument("--quiet", action="store_true", help="only the summary line per run")
 
 
