@@ -3,7 +3,7 @@
 import argparse
 import os
 
-from .. import plotting
+from .. import geometry, plotting
 from ..errors import CortexError
 from ..run import Run
 
@@ -100,6 +100,14 @@ def membranes_of(snapshot, name=None):
     if name not in membranes:
         raise CortexError(f"{where} has no membrane '{name}' (it has {', '.join(membranes)})")
     return [membranes[name]]
+
+
+def closed_membrane(run, name):
+    """The first snapshot's membrane (the one named, or the first), which must be closed."""
+    membrane = membranes_of(run.snapshot(0), name)[0]
+    if not geometry.is_closed(membrane.triangles):
+        raise CortexError(f"{run.trajectory_path}: membrane '{membrane.name}' is open: this measures a vesicle")
+    return membrane
 
 
 def species_of(membrane, name, where):

@@ -14,7 +14,6 @@ import numpy as np
 
 from .. import geometry
 from . import common
-from .tubes import closed_membrane
 
 HELP = "filaments lining a vesicle: share of length near the membrane, its alignment, the membrane's roughness"
 
@@ -74,7 +73,7 @@ def roughness(membrane):
 
 def table(outdir, membrane_name, within):
     run = common.open_run(outdir)
-    membrane = closed_membrane(run, membrane_name)
+    membrane = common.closed_membrane(run, membrane_name)
     rows = []
     for s in run.snapshots():
         m, f = s.membranes.get(membrane.name), common.filaments_of(s)

@@ -59,14 +59,6 @@ def shape(membrane, axis):
     return [body, *pole(along, across, body), *pole(-along, across, body)]
 
 
-def closed_membrane(run, name):
-    """The first snapshot's membrane (the one named, or the first), which must be closed."""
-    membrane = common.membranes_of(run.snapshot(0), name)[0]
-    if not geometry.is_closed(membrane.triangles):
-        raise CortexError(f"{run.trajectory_path}: membrane '{membrane.name}' is open: this measures a vesicle")
-    return membrane
-
-
 def tube_radius_of_config(run, name):
     """√(κ/2γ) of membrane `name` from the stored config, or None without a constant
     tension (none, or a schedule)."""
@@ -81,7 +73,7 @@ def tube_radius_of_config(run, name):
 
 def table(outdir, membrane_name):
     run = common.open_run(outdir)
-    membrane = closed_membrane(run, membrane_name)
+    membrane = common.closed_membrane(run, membrane_name)
     rows = []
     for s in run.snapshots():
         m = s.membranes.get(membrane.name)
