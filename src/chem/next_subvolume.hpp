@@ -62,10 +62,15 @@ class NextSubvolumeEngine final : public EngineBase {
   }
   void setPropensity(Index i, Index r);
   // Changes the copies of s in i by delta and every propensity that reads them, there
-  // and in the surface subvolumes i holds.
-  void changeCopies(Index i, Index s, int delta);
-  // The surface subvolumes i holds, after copies of 3D species s changed in i.
-  void updateHeldReaders(Index i, Index s);
+  // and in the surface subvolumes i holds. Inline, with the readers out of line: a
+  // species no reaction reads (pure diffusion) pays three loads and no call.
+  void changeCopies(Index i, Index s, int delta) {
+    copies_[static_cast<std::size_t>(i) * S_ + s] += delta;
+    sub_[i].diffusion += delta * hopOutOf(i, s);
+    if (read_[s]) updateReaders(i, s);
+  }
+  // The propensities reading species s in i, and in the surface subvolumes i holds.
+  void updateReaders(Index i, Index s);
   void fire(Index i, double t);
   Index pickReaction(Index i, double x) const;
   // Reaction r's changes in subvolume i itself and the propensities there that read them;
@@ -97,6 +102,7 @@ class NextSubvolumeEngine final : public EngineBase {
   std::vector<double> propensity_;  // [i * R + r]
   std::vector<double> block_sum_;   // [i * blocks_ + b]
   std::vector<Subvolume> sub_;
+  std::vector<std::uint8_t> read_;  // per species: some reaction reads its copies
   bool advancing_ = false;
   Index firing_ = -1;   // subvolume being fired, during an advance
   double now_ = 0.0;    // its event time
