@@ -137,21 +137,34 @@ class ChemistryEngine {
   // and its rate is the free one times the drift factor of `scheme` (chem/hop_drift.hpp);
   // the exponential one keeps detailed balance with e^{−W} exactly. Rates are kept exact
   // event by event: after each hop the field and the hop rates around both ends are
-  // recomputed. The species may bind from 3D species (a reaction whose only surface
-  // change is one more copy of it; binding is aggregated, ReactionNetwork::aggregated) and
-  // unbind into them (one copy of it → 3D species); unbinding from j then fires at
-  // r e^{V_j + R_j − K_jj}, the energy its copy leaves, so binding keeps detailed balance
-  // with e^{−W}. Other reactions of it are refused.
+  // recomputed.
+  //
+  // An on-site energy F_j(N_j) of the copies sharing a subvolume may come on top (crowded
+  // curvature sensing, sim/curvature_sensing.hpp): given as arrival energies
+  // a_j(m) = F_j(m + 1) − F_j(m), it adds a_k(N_k) − a_i(N_i − 1) to x, and W gains
+  // Σ_j F_j(N_j); rates around both ends of a hop are recomputed as for the field.
+  //
+  // Unbinding (a reaction taking one copy of the species into 3D species only) from j
+  // fires at r e^{V_j + R_j − K_jj + a_j(N_j − 1)}, the energy its copy leaves, so binding
+  // (aggregated, ReactionNetwork::aggregated) keeps detailed balance with e^{−W} (thesis
+  // eq. 3.14). Other reactions of the species fire at their mass-action propensity, as
+  // the thesis' surface reactions do (eq. 3.13); desorption of several copies at once is
+  // refused.
   struct SurfaceInteraction {
     std::vector<double> potential;  // per subvolume of the surface: V_j
     std::vector<double> self;       // per subvolume: K_jj
     std::vector<double> pair;       // per directed edge of the surface's graph: K_jk = K_kj
+    // Arrival energies, row j = [onsite_start[j], onsite_start[j + 1]) of `onsite`, a_j(m)
+    // at m = 0, 1, ...; past the row's end its last value; an empty row is 0. Both empty:
+    // no on-site energy.
+    std::vector<Index> onsite_start;  // per subvolume + 1
+    std::vector<double> onsite;
     DriftScheme scheme = DriftScheme::kExponential;
   };
   // Gives surface species `species` its interaction on the surface's current graph
   // (setSurface clears it, as it does drift factors). Throws std::invalid_argument for a
-  // 3D species, one that other reactions change, sizes other than the graph's, values
-  // not finite, or K not symmetric.
+  // 3D species, one that a reaction desorbs several copies at a time, sizes other than
+  // the graph's, values not finite, or K not symmetric.
   virtual void setSurfaceInteraction(Index species, SurfaceInteraction interaction) = 0;
 
   // The total propensity (events/s) at the current copies and rates, and the channel

@@ -30,7 +30,8 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       drift_(S_),
       interaction_(S_),
       field_(S_),
-      interacts_(S_, 0) {
+      interacts_(S_, 0),
+      paired_(S_, 0) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
   for (Index r = 0; r < R_; ++r)
     if (aggregated(r)) aggregated_.push_back(r);
@@ -357,6 +358,7 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
       interaction_[s] = SurfaceInteraction{};
       field_[s].clear();
       interacts_[s] = 0;
+      paired_[s] = 0;
       for (Index& u : unbinding_)
         if (u == s) u = -1;
     }

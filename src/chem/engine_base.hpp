@@ -92,14 +92,15 @@ class EngineBase : public ChemistryEngine {
     const double p = rate * confinementScale(i, r) *
                      combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
                                   &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
-    if (unbinding_.empty() || unbinding_[r] < 0 || region_of_[i] == 0) return p;
+    // No factor where r cannot fire (another region: the species' potential has no entry).
+    if (p == 0.0 || unbinding_.empty() || unbinding_[r] < 0 || region_of_[i] == 0) return p;
     return p * unbindingFactor(i, unbinding_[r]);
   }
 
   // Whether copies of s interact (setSurfaceInteraction).
   bool interacting(Index s) const { return interacts_[s] != 0; }
-  // e^{V_i + R_i − K_ii}: the factor on the unbinding of interacting species s from
-  // surface subvolume i (the energy its copy leaves behind).
+  // e^{V_i + R_i − K_ii + a_i(N_i − 1)}: the factor on the unbinding of interacting species
+  // s from surface subvolume i (the energy its copy leaves behind).
   double unbindingFactor(Index i, Index s) const;
   // How many of interactionChanged's subvolumes come first as those whose field changed.
   std::size_t interactionFieldsChanged() const { return near_.size(); }
@@ -192,6 +193,8 @@ class EngineBase : public ChemistryEngine {
   // Interactions (surface_interaction.cpp): R_i of species s from the copies; the
   // per-copy rate along edge e out of subvolume i; edge_rate_ and hop_out_ of i.
   double pairField(Index s, Index i) const;
+  // a_j(m) of species s at region-local subvolume a (SurfaceInteraction::onsite).
+  double arrivalEnergy(Index s, Index a, int m) const;
   double interactionRate(Index s, Index i, Index e) const;
   void computeInteractionRates(Index s, Index i);
   // Moves copies of s out of inactive subvolumes; marks the subvolumes touched.
@@ -220,6 +223,7 @@ class EngineBase : public ChemistryEngine {
   std::vector<SurfaceInteraction> interaction_;
   std::vector<std::vector<double>> field_;
   std::vector<char> interacts_;  // per species: has an interaction (one byte for the hop path)
+  std::vector<char> paired_;     // per species: its interaction has pair terms (K ≠ 0)
   // Scratch of interactionChanged: visit marks per subvolume, and the sets it builds.
   std::vector<std::uint32_t> mark_;
   std::uint32_t mark_round_ = 0;

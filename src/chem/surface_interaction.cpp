@@ -1,6 +1,7 @@
 // EngineBase's pair interactions of surface species (ChemistryEngine::SurfaceInteraction):
 // the field R = K N of the other copies and the hop rates it biases, kept exact after
 // every event that moves a copy.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -20,15 +21,13 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
       if (change.species == species) own = change.delta;
       else if (!change.held) ++others;
     }
-    if (own == 0) continue;
+    if (own >= 0 || others > 0) continue;  // not a desorption: mass action
     const ReactionKernel& k = net_.kernels[r];
-    const bool binding = aggregated(r) && own == 1 && others == 0;
-    const bool unbinding = k.kind == ReactionKernel::Kind::kLinear && k.a == species && own == -1 && others == 0;
-    if (!binding && !unbinding)
+    if (k.kind != ReactionKernel::Kind::kLinear || k.a != species || own != -1)
       throw std::invalid_argument("chemistry engine: interacting species \"" + species_[species].name +
-                                  "\" takes part in reaction \"" + equations_[r] +
-                                  "\": only binding from 3D species and unbinding into them are supported");
-    if (unbinding) unbinds.push_back(r);
+                                  "\" leaves the surface in reaction \"" + equations_[r] +
+                                  "\": only one copy at a time may unbind (its energy factor is per copy)");
+    unbinds.push_back(r);
   }
   const SubvolumeGraph& g = graphs_[region];
   const auto n = static_cast<std::size_t>(g.count());
@@ -41,8 +40,15 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
       if (!std::isfinite(x)) return false;
     return true;
   };
-  if (!finite(interaction.potential) || !finite(interaction.self) || !finite(interaction.pair))
+  if (!finite(interaction.potential) || !finite(interaction.self) || !finite(interaction.pair) ||
+      !finite(interaction.onsite))
     throw std::invalid_argument("chemistry engine: an interaction term is not finite");
+  const std::vector<Index>& row = interaction.onsite_start;
+  const bool rows_ok = row.empty() ? interaction.onsite.empty()
+                                   : row.size() == n + 1 && row.front() == 0 &&
+                                         row.back() == static_cast<Index>(interaction.onsite.size()) &&
+                                         std::is_sorted(row.begin(), row.end());
+  if (!rows_ok) throw std::invalid_argument("chemistry engine: an interaction's on-site rows are not laid out per subvolume");
   for (Index i = 0; i < g.count(); ++i)
     for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
       const Index back = reverseEdge(g, i, e);
@@ -54,6 +60,9 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   interaction_[species] = std::move(interaction);
   field_[species].assign(n, 0.0);
   interacts_[species] = 1;
+  paired_[species] = 0;
+  for (const std::vector<double>* terms : {&interaction_[species].self, &interaction_[species].pair})
+    for (double x : *terms) paired_[species] = paired_[species] || x != 0.0;
   if (!unbinds.empty() && unbinding_.empty()) unbinding_.assign(R_, -1);
   for (Index r : unbinds) unbinding_[r] = species;
   computeHopRates();
@@ -63,7 +72,16 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
 double EngineBase::unbindingFactor(Index i, Index s) const {
   const SurfaceInteraction& k = interaction_[s];
   const Index a = i - region_start_[net_.speciesRegion[s]];
-  return std::exp(k.potential[a] + field_[s][a] - k.self[a]);
+  const int n = copies_[static_cast<std::size_t>(i) * S_ + s];
+  return std::exp(k.potential[a] + field_[s][a] - k.self[a] + arrivalEnergy(s, a, std::max(n - 1, 0)));
+}
+
+double EngineBase::arrivalEnergy(Index s, Index a, int m) const {
+  const SurfaceInteraction& k = interaction_[s];
+  if (k.onsite_start.empty()) return 0.0;
+  const Index begin = k.onsite_start[a], end = k.onsite_start[a + 1];
+  if (begin == end) return 0.0;
+  return k.onsite[std::min<Index>(begin + m, end - 1)];
 }
 
 double EngineBase::pairField(Index s, Index i) const {
@@ -82,7 +100,12 @@ double EngineBase::interactionRate(Index s, Index i, Index e) const {
   const Index a = i - first, b = edge_target_[e] - first;
   const double* field = field_[s].data();
   // The moving copy leaves its own field behind: − K_ik + K_ii.
-  const double x = k.potential[b] - k.potential[a] + field[b] - field[a] - k.pair[e - edge_start_[first]] + k.self[a];
+  double x = k.potential[b] - k.potential[a] + field[b] - field[a] - k.pair[e - edge_start_[first]] + k.self[a];
+  if (!k.onsite_start.empty()) {
+    const int n_from = copies_[static_cast<std::size_t>(i) * S_ + s];
+    const int n_to = copies_[static_cast<std::size_t>(edge_target_[e]) * S_ + s];
+    x += arrivalEnergy(s, b, n_to) - arrivalEnergy(s, a, std::max(n_from - 1, 0));
+  }
   const double factor = k.scheme == DriftScheme::kExponential ? exponentialDrift(x) : linearDrift(x, -x);
   return species_[s].diffusion / hop_length2_[e] * factor;
 }
@@ -113,9 +136,11 @@ const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index
     mark_[v] = mark;
     list.push_back(v);
   };
+  // Without pair terms only the ends' own (on-site) energies changed.
   for (Index end : {a, b}) {
     add(near_, end, near_mark);
-    for (Index e = edge_start_[end]; e < edge_start_[end + 1]; ++e) add(near_, edge_target_[e], near_mark);
+    if (paired_[s])
+      for (Index e = edge_start_[end]; e < edge_start_[end + 1]; ++e) add(near_, edge_target_[e], near_mark);
   }
   const Index first = region_start_[net_.speciesRegion[s]];
   for (Index v : near_) field_[s][v - first] = pairField(s, v);

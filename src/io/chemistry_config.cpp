@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 
 #include "core/error.hpp"
 #include "io/box_region_config.hpp"
@@ -98,23 +99,25 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
   }
 }
 
-// One copy of `species` made from 3D species only, or turned into 3D species only.
-bool bindsOrUnbinds(const ReactionDef& def, Index species, const std::vector<SpeciesDef>& all) {
-  auto only3D = [&](const std::vector<Stoichiometry>& side) {
-    for (const Stoichiometry& x : side)
-      if (all[x.species].surface >= 0) return false;
-    return !side.empty();
-  };
-  auto isOne = [&](const std::vector<Stoichiometry>& side) {
-    return side.size() == 1 && side.front().species == species && side.front().count == 1;
-  };
-  return (isOne(def.products) && only3D(def.reactants)) || (isOne(def.reactants) && only3D(def.products));
+// Whether reaction `def` takes copies of surface species `species` off the surface (no
+// other surface species changes) in any way but one copy into 3D species only.
+bool desorbsSeveral(const ReactionDef& def, Index species, const std::vector<SpeciesDef>& all) {
+  std::map<Index, int> net;  // surface species' net changes
+  for (const Stoichiometry& x : def.reactants)
+    if (all[x.species].surface >= 0) net[x.species] -= x.count;
+  for (const Stoichiometry& x : def.products)
+    if (all[x.species].surface >= 0) net[x.species] += x.count;
+  for (const auto& [other, change] : net)
+    if (other != species && change != 0) return false;
+  if (!(net[species] < 0)) return false;
+  const bool one = def.reactants.size() == 1 && def.reactants.front().count == 1;
+  return !one;
 }
 
 bool interacting(const std::vector<MembraneConfig>& membranes, const std::string& species) {
   for (const MembraneConfig& m : membranes)
     for (const SurfaceSpeciesConfig& s : m.species)
-      if (s.name == species) return s.interaction.has_value();
+      if (s.name == species) return s.interaction.has_value() || s.curvature.has_value();
   return false;
 }
 
@@ -171,15 +174,14 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
                                          c.surfaces[surface], c.surfaces[on]));
         if (on >= 0) surface = on;
       }
-    // An interacting species may bind from 3D species and unbind into them, nothing else
-    // (ChemistryEngine::setSurfaceInteraction).
-    for (const auto* list : {&def.reactants, &def.products})
-      for (const Stoichiometry& x : *list)
-        if (interacting(membranes, c.species[x.species].name) && !bindsOrUnbinds(def, x.species, c.species))
-          r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction]: its reactions may only "
-                                         "bind it from 3D species (\"C -> {}\") or unbind it into them "
-                                         "(\"{} -> C\")", c.species[x.species].name, c.species[x.species].name,
-                                         c.species[x.species].name));
+    // Copies of a species with a pair interaction or curvature sensing leave the surface
+    // one at a time, each with the energy it had (ChemistryEngine::SurfaceInteraction).
+    for (const Stoichiometry& x : def.reactants)
+      if (interacting(membranes, c.species[x.species].name) && desorbsSeveral(def, x.species, c.species))
+        r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction] or [curvature]: it may leave "
+                                       "the membrane only one copy at a time (\"{} -> C\"), since each copy "
+                                       "unbinds with its own energy", c.species[x.species].name,
+                                       c.species[x.species].name));
     const bool on_surface = surface >= 0;
     if (on_surface && restriction.restricted())
       r.fail(restriction.region ? "region" : restriction.side.outside ? "outside" : "inside",

@@ -56,12 +56,7 @@ SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   s.footprint = r.number("footprint", 0.0, Range::nonNegative(), "nm^2");
   if (const auto p = r.table("potential")) s.potential = readPotential(*p);
   if (const auto c = r.table("curvature")) s.curvature = readCurvature(*c);
-  if (const auto i = r.table("interaction")) {
-    // Curvature sensing's energies depend on the copies too; the engine keeps only the
-    // pair field exact event by event, so the two are not combined.
-    if (s.curvature) r.fail("interaction", "cannot be combined with [curvature] (not implemented)");
-    s.interaction = readInteraction(*i);
-  }
+  if (const auto i = r.table("interaction")) s.interaction = readInteraction(*i);
   s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear
                                                                                  : DriftScheme::kExponential;
   r.finish();

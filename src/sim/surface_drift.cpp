@@ -16,22 +16,15 @@ double surfacePotential(const SurfacePotentialConfig& p, const Vec3& x) {
 }
 
 DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& h, DriftScheme scheme) {
-  return driftFactors(graph, h, h, scheme);
-}
-
-DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& arrive,
-                          const std::vector<double>& leave, DriftScheme scheme) {
   DriftFactors out;
   out.factors.resize(static_cast<std::size_t>(graph.numEdges()));
   for (Index i = 0; i < graph.count(); ++i)
     for (Index e = graph.start[i]; e < graph.start[i + 1]; ++e) {
-      const Index j = graph.target[e];
-      const double x = arrive[j] - leave[i];
-      const double reverse = arrive[i] - leave[j];
+      const double x = h[graph.target[e]] - h[i];
       if (scheme == DriftScheme::kExponential) {
         out.factors[e] = exponentialDrift(x);
       } else {
-        out.factors[e] = linearDrift(x, reverse);
+        out.factors[e] = linearDrift(x, -x);
         out.closed_edges += out.factors[e] == 0.0;  // counted from both ends
       }
     }

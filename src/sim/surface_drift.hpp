@@ -25,15 +25,9 @@ struct DriftFactors {
   Index closed_edges = 0;       // linear scheme: edges closed because |x| > 2
 };
 
-// `h` per subvolume of `graph` (k_BT).
+// `h` per subvolume of `graph` (k_BT). Energies that depend on the copies (pair
+// attraction, curvature sensing) are the engine's, event by event
+// (ChemistryEngine::SurfaceInteraction).
 DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& h, DriftScheme scheme);
-
-// The same when a copy's energy depends on the copies around it (curvature sensing):
-// `arrive`[j] is the energy of a copy joining subvolume j, `leave`[i] that of one of the
-// copies already in i, so a hop i → j has x = arrive[j] − leave[i] and its reverse from
-// the state it leads to −x: exact detailed balance in the state the factors were computed
-// in. The linear scheme closes an edge when either direction's |x| ≥ 2.
-DriftFactors driftFactors(const SubvolumeGraph& graph, const std::vector<double>& arrive,
-                          const std::vector<double>& leave, DriftScheme scheme);
 
 }  // namespace cortex

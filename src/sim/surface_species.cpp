@@ -16,6 +16,12 @@
 #include "sim/system.hpp"
 
 namespace cortex {
+namespace {
+// Species whose energy depends on the copies (pair attraction, curvature sensing): the
+// engine keeps their rates exact event by event (ChemistryEngine::SurfaceInteraction).
+bool inEngine(const SurfaceSpeciesConfig& c) { return c.interaction || c.curvature; }
+}  // namespace
+
 void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector<std::unique_ptr<Membrane>>& membranes,
                          std::uint64_t seed, const std::string& source) {
   RandomStream random(seed, StreamId::kSurfaceSpeciesPlacement);
@@ -104,9 +110,10 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
       const Surface& s = surfaces_[k];
       const auto j = static_cast<Index>(std::find(s.species.begin(), s.species.end(), x.species) - s.species.begin());
       u.surface = k;
-      // An interacting species' unbinding carries its potential in the engine.
-      const bool feels = s.configs[j].potential || s.configs[j].curvature;
-      if (feels && !s.configs[j].interaction) u.reactants.emplace_back(j, x.count);
+      // The unbinding of a species with an interaction or curvature sensing carries its
+      // energy in the engine (exactly, copy by copy).
+      const SurfaceSpeciesConfig& c = s.configs[j];
+      if (c.potential && !inEngine(c)) u.reactants.emplace_back(j, x.count);
     }
     if (!u.reactants.empty()) unbinding_.push_back(std::move(u));
   }
@@ -135,74 +142,82 @@ void SurfaceSpeciesFeedback::update(System& system) {
       throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": its species cannot live on this mesh: {}",
                                  system.time(), membrane.name(), e.what()));
     }
-    const std::vector<CopyEnergies> energies = copyEnergies(s, membrane, cells.graph, system.time());
+    const std::vector<std::vector<double>> potential = potentials(s, membrane);
+    std::vector<double> curvature;  // per vertex, 1/nm, once a species senses it
     for (std::size_t j = 0; j < s.species.size(); ++j) {
-      if (const auto& pair = s.configs[j].interaction) {
-        // The engine biases the hops by the pair field itself, event by event.
-        std::vector<double> potential = energies[j].arrive;
-        potential.resize(static_cast<std::size_t>(n), 0.0);
-        engine_.setSurfaceInteraction(s.species[j], pairInteraction(cells.graph, gaussianPairMoments(pair->height, pair->range),
-                                                                    std::move(potential), s.configs[j].drift));
+      const SurfaceSpeciesConfig& c = s.configs[j];
+      if (inEngine(c)) {
+        // The engine biases the hops by the pair field and the on-site energy itself,
+        // event by event.
+        std::vector<double> v = potential[j];
+        v.resize(static_cast<std::size_t>(n), 0.0);
+        const PairMoments moments = c.interaction ? gaussianPairMoments(c.interaction->height, c.interaction->range)
+                                                  : PairMoments{};
+        ChemistryEngine::SurfaceInteraction interaction = pairInteraction(cells.graph, moments, std::move(v), c.drift);
+        if (c.curvature) {
+          if (curvature.empty())
+            curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
+                                            membrane.mechanics().bending.estimator);
+          setSensingRows(c, membrane, cells.graph, curvature, system.time(), interaction);
+        }
+        engine_.setSurfaceInteraction(s.species[j], std::move(interaction));
         continue;
       }
-      if (energies[j].arrive.empty()) continue;
-      const DriftFactors drift = driftFactors(cells.graph, energies[j].arrive, energies[j].leave, s.configs[j].drift);
+      if (potential[j].empty()) continue;
+      const DriftFactors drift = driftFactors(cells.graph, potential[j], c.drift);
       closed_.drift += drift.closed_edges;
       engine_.setSurfaceDrift(s.species[j], drift.factors);
     }
-    setUnbindingFactors(static_cast<Index>(k), energies, n, system.time());
+    setUnbindingFactors(static_cast<Index>(k), potential, n, system.time());
   }
 }
 
-std::vector<SurfaceSpeciesFeedback::CopyEnergies> SurfaceSpeciesFeedback::copyEnergies(
-    const Surface& s, const Membrane& membrane, const SubvolumeGraph& cells, double t) const {
+std::vector<std::vector<double>> SurfaceSpeciesFeedback::potentials(const Surface& s, const Membrane& membrane) const {
   const SurfaceMesh& mesh = membrane.mesh();
-  const Index n = mesh.numVertices();
-  std::vector<CopyEnergies> out(s.species.size());
-  std::vector<double> curvature;  // per vertex, 1/nm, once a species senses it
+  std::vector<std::vector<double>> out(s.species.size());
   for (std::size_t j = 0; j < s.species.size(); ++j) {
-    const SurfaceSpeciesConfig& c = s.configs[j];
-    if (!c.potential && !c.curvature) continue;
-    std::vector<double>& arrive = out[j].arrive;
-    arrive.assign(static_cast<std::size_t>(n), 0.0);
-    if (c.potential)
-      for (Index v = 0; v < n; ++v) arrive[v] = surfacePotential(*c.potential, mesh.positions()[v]);
-    out[j].leave = arrive;
-    if (!c.curvature) continue;
-    const double kappa_lipid = membrane.mechanics().bending.modulus.at(t);
-    const double lipid_curvature = membrane.mechanics().bending.spontaneous_curvature.at(t);
-    if (!(kappa_lipid > 0.0))
-      throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature sensing "
-                                 "needs it > 0", t, membrane.name(), kappa_lipid));
-    if (curvature.empty())
-      curvature = vertexMeanCurvature(membrane.currentGeometry(), membrane.topology(),
-                                      membrane.mechanics().bending.estimator);
-    const std::vector<int>& copies = membrane.speciesCopies()[j];
-    for (Index v = 0; v < n; ++v) {
-      const auto energy = [&](int others) {
-        return curvatureSensingEnergy(*c.curvature, kappa_lipid, lipid_curvature, curvature[v], others, cells.size[v]) /
-               thermal_energy_;
-      };
-      arrive[v] += energy(copies[v]);
-      out[j].leave[v] += energy(std::max(copies[v] - 1, 0));
-    }
+    if (!s.configs[j].potential) continue;
+    out[j].resize(static_cast<std::size_t>(mesh.numVertices()));
+    for (Index v = 0; v < mesh.numVertices(); ++v) out[j][v] = surfacePotential(*s.configs[j].potential, mesh.positions()[v]);
   }
   return out;
 }
 
-void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::vector<CopyEnergies>& energies,
+void SurfaceSpeciesFeedback::setSensingRows(const SurfaceSpeciesConfig& c, const Membrane& membrane,
+                                            const SubvolumeGraph& cells, const std::vector<double>& curvature,
+                                            double t, ChemistryEngine::SurfaceInteraction& interaction) const {
+  const double kappa_lipid = membrane.mechanics().bending.modulus.at(t);
+  const double lipid_curvature = membrane.mechanics().bending.spontaneous_curvature.at(t);
+  if (!(kappa_lipid > 0.0))
+    throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": bending_modulus {:g} pN nm: curvature sensing "
+                               "needs it > 0", t, membrane.name(), kappa_lipid));
+  const CurvatureSensingConfig& p = *c.curvature;
+  interaction.onsite_start.assign(1, 0);
+  interaction.onsite.clear();
+  for (Index v = 0; v < cells.count(); ++v) {
+    // φ = m A_p/|C| reaches 1 at m = ⌈|C|/A_p⌉; a footprint caps the copies before that.
+    double last = std::ceil(cells.size[v] / p.area);
+    if (c.footprint > 0.0) last = std::min(last, std::floor(cells.size[v] / c.footprint));
+    for (int m = 0; m <= static_cast<int>(last); ++m)
+      interaction.onsite.push_back(
+          curvatureSensingEnergy(p, kappa_lipid, lipid_curvature, curvature[v], m, cells.size[v]) / thermal_energy_);
+    interaction.onsite_start.push_back(static_cast<Index>(interaction.onsite.size()));
+  }
+}
+
+void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::vector<std::vector<double>>& potentials,
                                                  Index vertices, double t) const {
   const Index start = engine_.regionStart(surface + 1);
   for (const Unbinding& u : unbinding_) {
     if (u.surface != surface) continue;
     for (Index v = 0; v < vertices; ++v) {
       double exponent = 0.0;
-      for (const auto& [j, count] : u.reactants) exponent += count * energies[j].leave[v];
+      for (const auto& [j, count] : u.reactants) exponent += count * potentials[j][v];
       // e^700 is near the largest double: a copy that bound so firmly would unbind at
       // more than 1e300 /s.
       if (!(exponent < 700.0))
         throw RunError(fmt::format("t = {:.6g} s: membrane species energy {:.3g} k_BT at a vertex: unbinding at "
-                                   "r e^(beta V) overflows; check the potential and curvature parameters",
+                                   "r e^(beta V) overflows; check the potential's parameters",
                                    t, exponent));
       factors_.set(u.reaction, start + v, std::exp(exponent));
     }

@@ -61,22 +61,22 @@ class SurfaceSpeciesFeedback final : public Feedback {
     std::vector<Index> species;  // model indices, in the membrane's species order
     std::vector<SurfaceSpeciesConfig> configs;  // likewise
   };
-  // Energies (k_BT) per vertex of a copy arriving there and of one already there leaving:
-  // equal for an external potential; curvature sensing's V_H counts the vertex's n copies
-  // for an arriving one and n − 1 for a leaving one (sim/surface_drift.hpp). Empty for a
-  // species that feels neither.
-  struct CopyEnergies {
-    std::vector<double> arrive, leave;
-  };
+  // External potential (k_BT) per vertex of each species that has one, empty for the others.
+  std::vector<std::vector<double>> potentials(const Surface& s, const Membrane& membrane) const;
+  // Curvature sensing as the engine's on-site energy (ChemistryEngine::SurfaceInteraction):
+  // at vertex v the arrival energy a_v(m) = V_H(m others)/k_BT for m = 0 up to the count
+  // that covers the cell (φ = 1, past which V_H stays) or fills it (footprint).
+  void setSensingRows(const SurfaceSpeciesConfig& c, const Membrane& membrane, const SubvolumeGraph& cells,
+                      const std::vector<double>& curvature, double t,
+                      ChemistryEngine::SurfaceInteraction& interaction) const;
   struct Unbinding {
     Index reaction;  // model index
     Index surface;
     std::vector<std::pair<Index, int>> reactants;  // (index in Surface::species, count) with a potential
   };
-  std::vector<CopyEnergies> copyEnergies(const Surface& s, const Membrane& membrane, const SubvolumeGraph& cells,
-                                         double t) const;
   // Throws RunError when a factor e^{βV} would overflow.
-  void setUnbindingFactors(Index surface, const std::vector<CopyEnergies>& energies, Index vertices, double t) const;
+  void setUnbindingFactors(Index surface, const std::vector<std::vector<double>>& potentials, Index vertices,
+                           double t) const;
 
   CompartmentGrid grid_;
   ChemistryEngine& engine_;
