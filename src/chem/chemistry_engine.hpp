@@ -166,6 +166,13 @@ class ChemistryEngine {
   // 3D species, one that a reaction desorbs several copies at a time, sizes other than
   // the graph's, values not finite, or K not symmetric.
   virtual void setSurfaceInteraction(Index species, SurfaceInteraction interaction) = 0;
+  // Couples two interacting species of one surface (setSurfaceInteraction done for both)
+  // by a symmetric kernel K^ab (`self` per subvolume, `pair` per directed edge, as an
+  // interaction's): each copy of a feels R_a += K^ab N_b and each of b R_b += K^ab N_a,
+  // and W gains N_aᵀ K^ab N_b (no self-term: the copies are distinct). Hops and unbinding
+  // of both stay exact as above. Throws std::invalid_argument for a == b, species not
+  // interacting on one surface, a pair already coupled, sizes, values or symmetry.
+  virtual void setSurfaceCoupling(Index a, Index b, std::vector<double> self, std::vector<double> pair) = 0;
 
   // The total propensity (events/s) at the current copies and rates, and the channel
   // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"").

@@ -31,7 +31,8 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       interaction_(S_),
       field_(S_),
       interacts_(S_, 0),
-      paired_(S_, 0) {
+      paired_(S_, 0),
+      couplings_(S_) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
   for (Index r = 0; r < R_; ++r)
     if (aggregated(r)) aggregated_.push_back(r);
@@ -359,6 +360,7 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
       field_[s].clear();
       interacts_[s] = 0;
       paired_[s] = 0;
+      couplings_[s].clear();
       for (Index& u : unbinding_)
         if (u == s) u = -1;
     }

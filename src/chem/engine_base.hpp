@@ -33,6 +33,7 @@ class EngineBase : public ChemistryEngine {
                   const std::vector<int>& copies) override;
   void setSurfaceDrift(Index species, const std::vector<double>& factors) override;
   void setSurfaceInteraction(Index species, SurfaceInteraction interaction) override;
+  void setSurfaceCoupling(Index a, Index b, std::vector<double> self, std::vector<double> pair) override;
 
  protected:
   // Throws InputError for an invalid model or negative copies, std::invalid_argument
@@ -223,7 +224,13 @@ class EngineBase : public ChemistryEngine {
   std::vector<SurfaceInteraction> interaction_;
   std::vector<std::vector<double>> field_;
   std::vector<char> interacts_;  // per species: has an interaction (one byte for the hop path)
-  std::vector<char> paired_;     // per species: its interaction has pair terms (K ≠ 0)
+  std::vector<char> paired_;     // per species: its interaction has pair terms (K ≠ 0) or couplings
+  // Per species: the other species its field reads (setSurfaceCoupling), with the kernel.
+  struct Coupling {
+    Index other;
+    std::vector<double> self, pair;  // region-local
+  };
+  std::vector<std::vector<Coupling>> couplings_;
   // Scratch of interactionChanged: visit marks per subvolume, and the sets it builds.
   std::vector<std::uint32_t> mark_;
   std::uint32_t mark_round_ = 0;

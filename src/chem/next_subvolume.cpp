@@ -96,9 +96,9 @@ double NextSubvolumeEngine::diffusionSum(Index i) const {
     const Index v = changed[k];
     changeSubvolume(v, [&] {
       sub_[v].diffusion = diffusionSum(v);
-      if (k < fields && !unbinding_.empty())  // its unbinding reads the field
+      if (k < fields && !unbinding_.empty())  // unbinding reads the field (s's or a coupled one's)
         for (Index r = 0; r < R_; ++r)
-          if (unbinding_[r] == s) setPropensity(v, r);
+          if (unbinding_[r] >= 0) setPropensity(v, r);
     });
   }
 }

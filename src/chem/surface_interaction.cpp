@@ -60,11 +60,41 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   interaction_[species] = std::move(interaction);
   field_[species].assign(n, 0.0);
   interacts_[species] = 1;
-  paired_[species] = 0;
+  paired_[species] = !couplings_[species].empty();
   for (const std::vector<double>* terms : {&interaction_[species].self, &interaction_[species].pair})
     for (double x : *terms) paired_[species] = paired_[species] || x != 0.0;
   if (!unbinds.empty() && unbinding_.empty()) unbinding_.assign(R_, -1);
   for (Index r : unbinds) unbinding_[r] = species;
+  computeHopRates();
+  for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
+}
+
+void EngineBase::setSurfaceCoupling(Index a, Index b, std::vector<double> self, std::vector<double> pair) {
+  for (Index s : {a, b})
+    if (s < 0 || s >= S_ || !interacting(s))
+      throw std::invalid_argument("chemistry engine: a coupling needs two species with an interaction");
+  const Index region = net_.speciesRegion[a];
+  if (a == b || net_.speciesRegion[b] != region)
+    throw std::invalid_argument("chemistry engine: a coupling needs two different species of one surface");
+  for (const Coupling& c : couplings_[a])
+    if (c.other == b)
+      throw std::invalid_argument("chemistry engine: species \"" + species_[a].name + "\" and \"" +
+                                  species_[b].name + "\" are coupled twice");
+  const SubvolumeGraph& g = graphs_[region];
+  if (self.size() != static_cast<std::size_t>(g.count()) || pair.size() != static_cast<std::size_t>(g.numEdges()))
+    throw std::invalid_argument("chemistry engine: a coupling needs a self term per subvolume and a pair term per edge");
+  for (const std::vector<double>* terms : {&self, &pair})
+    for (double x : *terms)
+      if (!std::isfinite(x)) throw std::invalid_argument("chemistry engine: a coupling term is not finite");
+  for (Index i = 0; i < g.count(); ++i)
+    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
+      const Index back = reverseEdge(g, i, e);
+      if (back < 0 || std::abs(pair[e] - pair[back]) > 1e-12 * std::max(std::abs(pair[e]), 1.0))
+        throw std::invalid_argument("chemistry engine: a coupling's pair terms are not symmetric");
+    }
+  couplings_[a].push_back({b, self, pair});
+  couplings_[b].push_back({a, std::move(self), std::move(pair)});
+  paired_[a] = paired_[b] = 1;
   computeHopRates();
   for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
 }
@@ -88,9 +118,14 @@ double EngineBase::pairField(Index s, Index i) const {
   const SurfaceInteraction& k = interaction_[s];
   const Index first = region_start_[net_.speciesRegion[s]];
   const Index first_edge = edge_start_[first];
-  double r = k.self[i - first] * copies_[static_cast<std::size_t>(i) * S_ + s];
-  for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
-    r += k.pair[e - first_edge] * copies_[static_cast<std::size_t>(edge_target_[e]) * S_ + s];
+  auto field = [&](const std::vector<double>& self, const std::vector<double>& pair, Index of) {
+    double r = self[i - first] * copies_[static_cast<std::size_t>(i) * S_ + of];
+    for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e)
+      r += pair[e - first_edge] * copies_[static_cast<std::size_t>(edge_target_[e]) * S_ + of];
+    return r;
+  };
+  double r = field(k.self, k.pair, s);
+  for (const Coupling& c : couplings_[s]) r += field(c.self, c.pair, c.other);
   return r;
 }
 
@@ -120,8 +155,8 @@ void EngineBase::computeInteractionRates(Index s, Index i) {
   hop_out_[static_cast<std::size_t>(i) * S_ + s] = total;
 }
 
-// R changes at a, b and their neighbours (K has the graph's sparsity): every rate out of
-// those changes. A vertex one ring further keeps its own R, so only its edges into them
+// R changes at a, b and their neighbours (K has the graph's sparsity), for s and for the
+// species coupled to it: every rate of theirs out of those changes. A vertex one ring further keeps its own R, so only its edges into them
 // change; its hopOut is summed anew from the stored edge rates (in edge order, so it is
 // the same number computeHopRates gives).
 const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index b) {
@@ -142,23 +177,27 @@ const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index
     if (paired_[s])
       for (Index e = edge_start_[end]; e < edge_start_[end + 1]; ++e) add(near_, edge_target_[e], near_mark);
   }
-  const Index first = region_start_[net_.speciesRegion[s]];
-  for (Index v : near_) field_[s][v - first] = pairField(s, v);
   reach_ = near_;
-  for (Index v : near_) {
-    computeInteractionRates(s, v);
+  for (Index v : near_)
     for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) add(reach_, edge_target_[e], reach_mark);
-  }
-  for (auto k = near_.size(); k < reach_.size(); ++k) {
-    const Index v = reach_[k];
-    double total = 0.0;
-    for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) {
-      double& rate = edge_rate_[static_cast<std::size_t>(e) * S_ + s];
-      if (mark_[edge_target_[e]] == near_mark) rate = interactionRate(s, v, e);
-      total += rate;
+  // The fields that read copies of s: its own and those of the species coupled to it.
+  const Index first = region_start_[net_.speciesRegion[s]];
+  auto update = [&](Index u) {
+    for (Index v : near_) field_[u][v - first] = pairField(u, v);
+    for (Index v : near_) computeInteractionRates(u, v);
+    for (auto k = near_.size(); k < reach_.size(); ++k) {
+      const Index v = reach_[k];
+      double total = 0.0;
+      for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) {
+        double& rate = edge_rate_[static_cast<std::size_t>(e) * S_ + u];
+        if (mark_[edge_target_[e]] == near_mark) rate = interactionRate(u, v, e);
+        total += rate;
+      }
+      hop_out_[static_cast<std::size_t>(v) * S_ + u] = total;
     }
-    hop_out_[static_cast<std::size_t>(v) * S_ + s] = total;
-  }
+  };
+  update(s);
+  for (const Coupling& c : couplings_[s]) update(c.other);
   return reach_;
 }
 

@@ -116,8 +116,8 @@ bool desorbsSeveral(const ReactionDef& def, Index species, const std::vector<Spe
 
 bool interacting(const std::vector<MembraneConfig>& membranes, const std::string& species) {
   for (const MembraneConfig& m : membranes)
-    for (const SurfaceSpeciesConfig& s : m.species)
-      if (s.name == species) return s.interaction.has_value() || s.curvature.has_value();
+    for (std::size_t j = 0; j < m.species.size(); ++j)
+      if (m.species[j].name == species) return copyDependentEnergy(m.species, j);
   return false;
 }
 
@@ -178,7 +178,8 @@ std::optional<ChemistryConfig> readChemistry(const ConfigReader& root, const std
     // one at a time, each with the energy it had (ChemistryEngine::SurfaceInteraction).
     for (const Stoichiometry& x : def.reactants)
       if (interacting(membranes, c.species[x.species].name) && desorbsSeveral(def, x.species, c.species))
-        r.fail("equation", fmt::format("membrane species \"{}\" has an [interaction] or [curvature]: it may leave "
+        r.fail("equation", fmt::format("membrane species \"{}\" has a copy-dependent energy (interaction, "
+                                       "cross_interaction or curvature): it may leave "
                                        "the membrane only one copy at a time (\"{} -> C\"), since each copy "
                                        "unbinds with its own energy", c.species[x.species].name,
                                        c.species[x.species].name));

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "io/box_region_config.hpp"
 
 namespace cortex {
@@ -57,6 +59,11 @@ SurfaceSpeciesConfig readOne(const ConfigReader& r) {
   if (const auto p = r.table("potential")) s.potential = readPotential(*p);
   if (const auto c = r.table("curvature")) s.curvature = readCurvature(*c);
   if (const auto i = r.table("interaction")) s.interaction = readInteraction(*i);
+  for (const ConfigReader& c : r.tableArray("cross_interaction")) {
+    if (!c.has("species")) c.fail("species", "is required: the other species of this membrane");
+    const std::string other = c.name("species", "");
+    s.cross.push_back({other, readInteraction(c)});
+  }
   s.drift = r.choice("drift", "exponential", {"exponential", "linear"}) == "linear" ? DriftScheme::kLinear
                                                                                  : DriftScheme::kExponential;
   r.finish();
@@ -75,6 +82,24 @@ std::vector<SurfaceSpeciesConfig> readSurfaceSpecies(const ConfigReader& membran
         r.fail("curvature", fmt::format("\"{}\" generates curvature as well: one species per membrane may", other.name));
     }
     out.push_back(std::move(s));
+  }
+  // Cross interactions name another species of this membrane, once per pair.
+  const std::vector<ConfigReader> readers = membrane.tableArray("species");
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::vector<ConfigReader> cross = readers[j].tableArray("cross_interaction");
+    for (std::size_t k = 0; k < out[j].cross.size(); ++k) {
+      const std::string& other = out[j].cross[k].species;
+      const auto partner = std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.name == other; });
+      if (partner == out.end() || other == out[j].name)
+        cross[k].fail("species", fmt::format("\"{}\" is not another species of this membrane", other));
+      for (std::size_t m = 0; m < out[j].cross.size(); ++m)
+        if (m != k && out[j].cross[m].species == other)
+          cross[k].fail("species", fmt::format("\"{}\" is named twice", other));
+      for (const CrossInteractionConfig& back : partner->cross)
+        if (back.species == out[j].name)
+          cross[k].fail("species", fmt::format("\"{}\" declares the same pair: declare it on one of the two",
+                                               other));
+    }
   }
   return out;
 }

@@ -69,6 +69,14 @@ struct SurfaceInteractionConfig {
   double range = 0.0;   // nm, σ
 };
 
+// [[membrane.species.cross_interaction]]: the same attraction between the copies of this
+// species and those of `species`, another species of the membrane; declared on one of
+// the two.
+struct CrossInteractionConfig {
+  std::string species;
+  SurfaceInteractionConfig interaction;
+};
+
 // A protein species living on a membrane's vertices (thesis chapter 3), from
 // [[membrane.species]]: copies per vertex, hopping along the mesh's edges
 // (docs/proteins.md).
@@ -87,8 +95,22 @@ struct SurfaceSpeciesConfig {
   std::optional<SurfacePotentialConfig> potential;
   std::optional<CurvatureSensingConfig> curvature;
   std::optional<SurfaceInteractionConfig> interaction;
+  std::vector<CrossInteractionConfig> cross;
   DriftScheme drift = DriftScheme::kExponential;
 };
+
+// Whether the energy of a copy of species `index` (of one membrane's `species`) depends on
+// the copies: a pair attraction of its own or across species (declared on either side),
+// or curvature sensing. The chemistry engine then keeps its rates exact event by event
+// (ChemistryEngine::SurfaceInteraction), and its copies unbind one at a time.
+inline bool copyDependentEnergy(const std::vector<SurfaceSpeciesConfig>& species, std::size_t index) {
+  const SurfaceSpeciesConfig& s = species[index];
+  if (s.interaction || s.curvature || !s.cross.empty()) return true;
+  for (const SurfaceSpeciesConfig& other : species)
+    for (const CrossInteractionConfig& c : other.cross)
+      if (c.species == s.name) return true;
+  return false;
+}
 
 struct MembraneConfig {
   std::string name;

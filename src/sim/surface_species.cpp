@@ -16,12 +16,6 @@
 #include "sim/system.hpp"
 
 namespace cortex {
-namespace {
-// Species whose energy depends on the copies (pair attraction, curvature sensing): the
-// engine keeps their rates exact event by event (ChemistryEngine::SurfaceInteraction).
-bool inEngine(const SurfaceSpeciesConfig& c) { return c.interaction || c.curvature; }
-}  // namespace
-
 void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector<std::unique_ptr<Membrane>>& membranes,
                          std::uint64_t seed, const std::string& source) {
   RandomStream random(seed, StreamId::kSurfaceSpeciesPlacement);
@@ -112,8 +106,7 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
       u.surface = k;
       // The unbinding of a species with an interaction or curvature sensing carries its
       // energy in the engine (exactly, copy by copy).
-      const SurfaceSpeciesConfig& c = s.configs[j];
-      if (c.potential && !inEngine(c)) u.reactants.emplace_back(j, x.count);
+      if (s.configs[j].potential && !copyDependentEnergy(s.configs, j)) u.reactants.emplace_back(j, x.count);
     }
     if (!u.reactants.empty()) unbinding_.push_back(std::move(u));
   }
@@ -146,7 +139,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
     std::vector<double> curvature;  // per vertex, 1/nm, once a species senses it
     for (std::size_t j = 0; j < s.species.size(); ++j) {
       const SurfaceSpeciesConfig& c = s.configs[j];
-      if (inEngine(c)) {
+      if (copyDependentEnergy(s.configs, j)) {
         // The engine biases the hops by the pair field and the on-site energy itself,
         // event by event.
         std::vector<double> v = potential[j];
@@ -168,6 +161,16 @@ void SurfaceSpeciesFeedback::update(System& system) {
       closed_.drift += drift.closed_edges;
       engine_.setSurfaceDrift(s.species[j], drift.factors);
     }
+    for (std::size_t j = 0; j < s.species.size(); ++j)
+      for (const CrossInteractionConfig& x : s.configs[j].cross) {
+        const auto other = static_cast<std::size_t>(
+            std::find_if(s.configs.begin(), s.configs.end(), [&](const auto& c) { return c.name == x.species; }) -
+            s.configs.begin());
+        ChemistryEngine::SurfaceInteraction kernel =
+            pairInteraction(cells.graph, gaussianPairMoments(x.interaction.height, x.interaction.range),
+                            std::vector<double>(static_cast<std::size_t>(n), 0.0), DriftScheme::kExponential);
+        engine_.setSurfaceCoupling(s.species[j], s.species[other], std::move(kernel.self), std::move(kernel.pair));
+      }
     setUnbindingFactors(static_cast<Index>(k), potential, n, system.time());
   }
 }

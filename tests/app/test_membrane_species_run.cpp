@@ -5,6 +5,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <tuple>
+
+#include <functional>
+
 #include <numeric>
 
 #include "app/cli_helpers.hpp"
@@ -102,6 +106,23 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
     replaceOnce(dimer, "equation = \"M -> G\"", "equation = \"2 M -> G\"");
     expectCheckFails(dimer, "reaction.1.equation", "one copy at a time");
   }
+  // Cross interactions: with an unknown species or itself, declared on both sides, or
+  // without a partner.
+  auto cross = [](const std::string& partner) {
+    return "cross_interaction = [{ " + partner + "height = 0.1, range = 18.0 }]\n";
+  };
+  for (const char* partner : {"X", "P"}) {
+    std::string unknown = exampleText();
+    replaceOnce(unknown, "name = \"P\"\n", "name = \"P\"\n" + cross("species = \"" + std::string(partner) + "\", "));
+    expectCheckFails(unknown, "membrane.0.species.0.cross_interaction.0.species", "not another species");
+  }
+  std::string both_sides = exampleText();
+  replaceOnce(both_sides, "name = \"P\"\n", "name = \"P\"\n" + cross("species = \"M\", "));
+  replaceOnce(both_sides, "name = \"M\"\n", "name = \"M\"\n" + cross("species = \"P\", "));
+  expectCheckFails(both_sides, "membrane.0.species.0.cross_interaction.0.species", "on one of the two");
+  std::string no_partner = exampleText();
+  replaceOnce(no_partner, "name = \"P\"\n", "name = \"P\"\n" + cross(""));
+  expectCheckFails(no_partner, "membrane.0.species.0.cross_interaction.0.species", "required");
   // Proteins with a spontaneous curvature need the signed estimator (the default then).
   std::string unsigned_h = exampleText();
   replaceOnce(unsigned_h, "bending_modulus = 100.0", "bending_modulus = 100.0\ncurvature = \"unsigned\"");
@@ -134,25 +155,35 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
 
 // The pair attraction's rates live in the engine and follow every hop; a resumed run
 // must rebuild them to the last bit from the copies alone.
-std::string llpsConfig(double end_time) {
-  std::string text = readFile(sourceDir() / "examples" / "membrane_llps.toml");
-  const std::string key = "end_time = 0.5";
-  text.replace(text.find(key), key.size(), fmt::format("end_time = {}", end_time));
-  return text;
+// An example shortened to end_time.
+std::function<std::string(double)> shortened(const std::string& example, const std::string& end_key) {
+  return [=](double end_time) {
+    std::string text = readFile(sourceDir() / "examples" / example);
+    text.replace(text.find(end_key), end_key.size(), fmt::format("end_time = {}", end_time));
+    return text;
+  };
 }
 
+// The fig. 3.3 example (one self-attracting species) and the two-species one (a cross
+// interaction): whole and resumed runs agree copy for copy, and copies are conserved.
 TEST(MembraneSpeciesRun, InteractingCopiesResumeBitIdentically) {
-  TempDir dir;
-  runWholeAndResumed(dir, llpsConfig, 0.02, 0.04);
-  if (::testing::Test::HasFatalFailure()) return;
-  EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B"));
-  const h5::File a = h5::File::openReadOnly(dir / "A" / "trajectory.h5");
-  const h5::File b = h5::File::openReadOnly(dir / "B" / "trajectory.h5");
-  ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
-  for (const std::string& s : a.children("/snapshots")) {
-    const std::string g = "/snapshots/" + s + "/membranes/patch/species/P";
-    EXPECT_EQ(a.readInt32(g), b.readInt32(g)) << s;
-    EXPECT_EQ(sum(a.readInt32(g)), 1500) << s;
+  const std::vector<std::tuple<std::string, std::string, std::vector<std::pair<std::string, int>>>> cases = {
+      {"membrane_llps.toml", "end_time = 0.5", {{"P", 1500}}},
+      {"membrane_llps_two_species.toml", "end_time = 0.3", {{"P", 1500}, {"C", 500}}}};
+  for (const auto& [example, end_key, species] : cases) {
+    TempDir dir;
+    runWholeAndResumed(dir, shortened(example, end_key), 0.02, 0.04);
+    if (::testing::Test::HasFatalFailure()) return;
+    EXPECT_EQ(comparableSummary(dir / "A"), comparableSummary(dir / "B")) << example;
+    const h5::File a = h5::File::openReadOnly(dir / "A" / "trajectory.h5");
+    const h5::File b = h5::File::openReadOnly(dir / "B" / "trajectory.h5");
+    ASSERT_EQ(a.children("/snapshots"), b.children("/snapshots"));
+    for (const std::string& s : a.children("/snapshots"))
+      for (const auto& [name, copies] : species) {
+        const std::string g = "/snapshots/" + s + "/membranes/patch/species/" + name;
+        EXPECT_EQ(a.readInt32(g), b.readInt32(g)) << example << " " << s;
+        EXPECT_EQ(sum(a.readInt32(g)), copies) << example << " " << s;
+      }
   }
 }
 
