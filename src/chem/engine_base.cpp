@@ -104,13 +104,14 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
     held_.values.insert(held_.values.end(), row.begin(), row.end());
     held_.endRow();
   }
-  cap_.clear();
-  for (Index s = 0; s < S_; ++s) {
-    if (!(species_[s].footprint > 0.0)) continue;
-    if (cap_.empty()) cap_.assign(static_cast<std::size_t>(n) * S_, -1);
-    const Index k = net_.speciesRegion[s];
-    for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i)
-      cap_[static_cast<std::size_t>(i) * S_ + s] = static_cast<int>(std::floor(size_[i] / species_[s].footprint));
+  room_.clear();
+  crowding_.assign(regions, {});
+  for (Index s = 0; s < S_; ++s)
+    if (species_[s].footprint > 0.0) crowding_[net_.speciesRegion[s]].push_back(s);
+  for (Index k = 0; k < regions; ++k) {
+    if (crowding_[k].empty()) continue;
+    if (room_.empty()) room_.assign(static_cast<std::size_t>(n), 0.0);
+    for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) room_[i] = size_[i] * (1.0 + 1e-12);
   }
   diffusing_.assign(regions, {});
   for (Index s = 0; s < S_; ++s)
@@ -369,10 +370,11 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
 }
 
 bool EngineBase::capAccepts(Index r, Index i) const {
-  if (cap_.empty()) return true;
+  if (room_.empty()) return true;
+  double added = 0.0;
   for (const SpeciesChange& change : net_.changes[r])
-    if (!change.held && change.delta > 0 && crowded(i, change.species, change.delta)) return false;
-  return true;
+    if (!change.held) added += change.delta * species_[change.species].footprint;
+  return !(added > 0.0) || covered(i) + added <= room_[i];
 }
 
 void EngineBase::setSurfaceDrift(Index species, const std::vector<double>& factors) {

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/error.hpp"
 #include "core/random.hpp"
@@ -26,6 +25,7 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
     const auto n = static_cast<Index>(area.size());
     std::vector<std::string> names;
     std::vector<std::vector<int>> copies;
+    std::vector<double> covered(static_cast<std::size_t>(n), 0.0);  // nm² per vertex, by the species placed so far
     for (const SurfaceSpeciesConfig& s : mc.species) {
       const std::string where = fmt::format("{}: membrane \"{}\", species \"{}\"", source, mc.name, s.name);
       // Weights: the dual-cell areas of the vertices where copies may start.
@@ -43,18 +43,17 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
         count = std::llround(expected);
       }
-      // With a footprint, a vertex holds at most floor(|C_j| / footprint) copies, as the
+      // With a footprint, the copies of all such species share a vertex's area as the
       // engine counts them (SpeciesDef::footprint): draws onto a full vertex are drawn again.
-      std::vector<int> cap(static_cast<std::size_t>(n), std::numeric_limits<int>::max());
+      auto fits = [&](Index v) { return !(s.footprint > 0.0) || covered[v] + s.footprint <= area[v] * (1.0 + 1e-12); };
       if (s.footprint > 0.0) {
         double room = 0.0;
-        for (Index v = 0; v < n; ++v) {
-          cap[v] = static_cast<int>(std::floor(area[v] / s.footprint));
-          if (inside[v]) room += cap[v];
-        }
+        for (Index v = 0; v < n; ++v)
+          if (inside[v]) room += std::floor(std::max(area[v] * (1.0 + 1e-12) - covered[v], 0.0) / s.footprint);
         if (static_cast<double>(count) > 0.99 * room)
           throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
-                                       "(keep them under 99% full)", where, count, room, s.footprint));
+                                       "left by the species before it (keep them under 99% full)",
+                                       where, count, room, s.footprint));
       }
       std::vector<int> c(static_cast<std::size_t>(n), 0);
       for (std::int64_t k = 0; k < count;) {
@@ -62,8 +61,9 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         auto v = static_cast<Index>(std::upper_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
         v = std::min<Index>(v, n - 1);
         while (v > 0 && cumulative[v] == cumulative[v - 1]) --v;  // a vertex of weight 0 (outside the region)
-        if (c[v] >= cap[v]) continue;
+        if (!fits(v)) continue;
         ++c[v];
+        if (s.footprint > 0.0) covered[v] += s.footprint;
         ++k;
       }
       names.push_back(s.name);
