@@ -9,6 +9,31 @@
 #include "chem/engine_base.hpp"
 
 namespace cortex {
+namespace {
+
+bool finite(const std::vector<double>& v) {
+  for (double x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+// Throws std::invalid_argument unless K (`self` per subvolume, `pair` per directed edge of
+// g) has those sizes, finite values and K_jk = K_kj. `what`: "an interaction", "a coupling".
+void checkKernel(const SubvolumeGraph& g, const std::vector<double>& self, const std::vector<double>& pair,
+                 const std::string& what) {
+  if (self.size() != static_cast<std::size_t>(g.count()) || pair.size() != static_cast<std::size_t>(g.numEdges()))
+    throw std::invalid_argument("chemistry engine: " + what + " needs a self term per subvolume and a pair term "
+                                "per edge of the surface");
+  if (!finite(self) || !finite(pair)) throw std::invalid_argument("chemistry engine: " + what + "'s term is not finite");
+  for (Index i = 0; i < g.count(); ++i)
+    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
+      const Index back = reverseEdge(g, i, e);
+      if (back < 0 || std::abs(pair[e] - pair[back]) > 1e-12 * std::max(std::abs(pair[e]), 1.0))
+        throw std::invalid_argument("chemistry engine: " + what + "'s pair terms are not symmetric");
+    }
+}
+
+}  // namespace
 
 void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interaction) {
   if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
@@ -31,17 +56,10 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   }
   const SubvolumeGraph& g = graphs_[region];
   const auto n = static_cast<std::size_t>(g.count());
-  if (interaction.potential.size() != n || interaction.self.size() != n ||
-      interaction.pair.size() != static_cast<std::size_t>(g.numEdges()))
-    throw std::invalid_argument("chemistry engine: an interaction needs a potential and a self term per subvolume "
-                                "and a pair term per edge of the surface");
-  auto finite = [](const std::vector<double>& v) {
-    for (double x : v)
-      if (!std::isfinite(x)) return false;
-    return true;
-  };
-  if (!finite(interaction.potential) || !finite(interaction.self) || !finite(interaction.pair) ||
-      !finite(interaction.onsite))
+  checkKernel(g, interaction.self, interaction.pair, "an interaction");
+  if (interaction.potential.size() != n)
+    throw std::invalid_argument("chemistry engine: an interaction needs a potential per subvolume of the surface");
+  if (!finite(interaction.potential) || !finite(interaction.onsite))
     throw std::invalid_argument("chemistry engine: an interaction term is not finite");
   const std::vector<Index>& row = interaction.onsite_start;
   const bool rows_ok = row.empty() ? interaction.onsite.empty()
@@ -49,13 +67,6 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
                                          row.back() == static_cast<Index>(interaction.onsite.size()) &&
                                          std::is_sorted(row.begin(), row.end());
   if (!rows_ok) throw std::invalid_argument("chemistry engine: an interaction's on-site rows are not laid out per subvolume");
-  for (Index i = 0; i < g.count(); ++i)
-    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
-      const Index back = reverseEdge(g, i, e);
-      const double a = interaction.pair[e];
-      if (back < 0 || std::abs(a - interaction.pair[back]) > 1e-12 * std::max(std::abs(a), 1.0))
-        throw std::invalid_argument("chemistry engine: an interaction's pair terms are not symmetric");
-    }
   drift_[species].clear();
   interaction_[species] = std::move(interaction);
   field_[species].assign(n, 0.0);
@@ -80,18 +91,7 @@ void EngineBase::setSurfaceCoupling(Index a, Index b, std::vector<double> self, 
     if (c.other == b)
       throw std::invalid_argument("chemistry engine: species \"" + species_[a].name + "\" and \"" +
                                   species_[b].name + "\" are coupled twice");
-  const SubvolumeGraph& g = graphs_[region];
-  if (self.size() != static_cast<std::size_t>(g.count()) || pair.size() != static_cast<std::size_t>(g.numEdges()))
-    throw std::invalid_argument("chemistry engine: a coupling needs a self term per subvolume and a pair term per edge");
-  for (const std::vector<double>* terms : {&self, &pair})
-    for (double x : *terms)
-      if (!std::isfinite(x)) throw std::invalid_argument("chemistry engine: a coupling term is not finite");
-  for (Index i = 0; i < g.count(); ++i)
-    for (Index e = g.start[i]; e < g.start[i + 1]; ++e) {
-      const Index back = reverseEdge(g, i, e);
-      if (back < 0 || std::abs(pair[e] - pair[back]) > 1e-12 * std::max(std::abs(pair[e]), 1.0))
-        throw std::invalid_argument("chemistry engine: a coupling's pair terms are not symmetric");
-    }
+  checkKernel(graphs_[region], self, pair, "a coupling");
   couplings_[a].push_back({b, self, pair});
   couplings_[b].push_back({a, std::move(self), std::move(pair)});
   paired_[a] = paired_[b] = 1;
@@ -156,8 +156,8 @@ void EngineBase::computeInteractionRates(Index s, Index i) {
 }
 
 // R changes at a, b and their neighbours (K has the graph's sparsity), for s and for the
-// species coupled to it: every rate of theirs out of those changes. A vertex one ring further keeps its own R, so only its edges into them
-// change; its hopOut is summed anew from the stored edge rates (in edge order, so it is
+// species coupled to it: every rate of theirs out of those changes. A vertex one ring
+// further keeps its own R, so only its edges into them change; its hopOut is summed anew from the stored edge rates (in edge order, so it is
 // the same number computeHopRates gives).
 const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index b) {
   if (mark_.size() != static_cast<std::size_t>(N_) || mark_round_ >= UINT32_MAX - 2) {
