@@ -6,6 +6,9 @@
 // BM_SurfaceDiffusionInteracting: the same copies with a weak Gaussian pair attraction
 // (h = 0.01 k_BT, σ = 75 nm: μ₀/|C| ≈ −0.04 k_BT), whose hop rates are recomputed
 // around both ends after every hop (sim/pair_interaction.hpp): the price of exactness.
+// BM_SurfaceDiffusionOnsite: no pair terms, an on-site energy instead (crowded curvature
+// sensing's form: arrival energies 0, 0.1, 0.2, ... k_BT per copy already there, rows of
+// 20), so only the rates out of and into a hop's two ends are recomputed.
 #include <benchmark/benchmark.h>
 
 #include "chem/chemistry_engine.hpp"
@@ -16,7 +19,9 @@
 namespace cortex {
 namespace {
 
-void runSurfaceDiffusion(benchmark::State& state, bool interacting) {
+enum class Energy { kNone, kPair, kOnsite };
+
+void runSurfaceDiffusion(benchmark::State& state, Energy energy) {
   const SurfaceMesh mesh = SurfaceMesh::fromSoup(icosphere(Vec3::Zero(), 2000.0, 5), "icosphere");
   ChemistryModel model;
   model.volumes.size = {1e12};
@@ -27,9 +32,19 @@ void runSurfaceDiffusion(benchmark::State& state, bool interacting) {
   const auto n = static_cast<std::size_t>(mesh.numVertices());
   const SubvolumeGraph graph = dualCellGraph(mesh).graph;
   engine->setSurface(0, graph, std::vector<Index>(n, 0), std::vector<int>(n, 10));
-  if (interacting)
+  if (energy == Energy::kPair)
     engine->setSurfaceInteraction(0, pairInteraction(graph, gaussianPairMoments(0.01, 75.0), std::vector<double>(n, 0.0),
                                                      DriftScheme::kExponential));
+  if (energy == Energy::kOnsite) {
+    ChemistryEngine::SurfaceInteraction onsite =
+        pairInteraction(graph, PairMoments{}, std::vector<double>(n, 0.0), DriftScheme::kExponential);
+    onsite.onsite_start = {0};
+    for (std::size_t v = 0; v < n; ++v) {
+      for (int m = 0; m < 20; ++m) onsite.onsite.push_back(0.1 * m);
+      onsite.onsite_start.push_back(static_cast<Index>(onsite.onsite.size()));
+    }
+    engine->setSurfaceInteraction(0, std::move(onsite));
+  }
   const double window = 0.01;
   engine->advance(window);
   const std::int64_t before = engine->events();
@@ -40,10 +55,12 @@ void runSurfaceDiffusion(benchmark::State& state, bool interacting) {
   state.counters["events_per_advance"] = fired / static_cast<double>(state.iterations());
 }
 
-void BM_SurfaceDiffusion(benchmark::State& state) { runSurfaceDiffusion(state, false); }
-void BM_SurfaceDiffusionInteracting(benchmark::State& state) { runSurfaceDiffusion(state, true); }
+void BM_SurfaceDiffusion(benchmark::State& state) { runSurfaceDiffusion(state, Energy::kNone); }
+void BM_SurfaceDiffusionInteracting(benchmark::State& state) { runSurfaceDiffusion(state, Energy::kPair); }
+void BM_SurfaceDiffusionOnsite(benchmark::State& state) { runSurfaceDiffusion(state, Energy::kOnsite); }
 BENCHMARK(BM_SurfaceDiffusion)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SurfaceDiffusionInteracting)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SurfaceDiffusionOnsite)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace cortex
