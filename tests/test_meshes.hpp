@@ -30,6 +30,15 @@ inline SurfaceMesh patchMesh(double size, double edge, double perturbation = 0.0
   return SurfaceMesh::fromSoup(soup, "test patch");
 }
 
+// A 200 nm patch of 100 nm edges whose interior vertices are moved off the lattice: a
+// small irregular mesh (cells of unequal sizes) for tests that enumerate its states.
+inline SurfaceMesh irregularSmallPatch() {
+  SurfaceMesh mesh = patchMesh(200.0, 100.0);
+  for (Index v = 0; v < mesh.numVertices(); ++v)
+    if (!mesh.isBoundaryVertex(v)) mesh.positions()[v] += Vec3(23.0, -14.0, 0.0);
+  return mesh;
+}
+
 // Largest |h_v − mean of h over v's neighbours| relative to the mean |h|: how far a
 // per-vertex field (mean curvature) is from smooth. A relaxed smooth shape reads a few
 // percent; curvature hot spots read tens of percent or more.

@@ -16,6 +16,7 @@
 
 #include "chem/chem_statistics.hpp"
 #include "chem/chemistry_engine.hpp"
+#include "chem/two_copies.hpp"
 #include "sim/surface_graph.hpp"
 #include "test_meshes.hpp"
 
@@ -114,9 +115,7 @@ TEST_P(Crowding, OccupancyFollowsTheTruncatedPoissonProduct) {
 // would admit p = q in the cells between 0.55 and 1.1 mean cells, of which the patch has
 // some (asserted), and fail.
 TEST_P(Crowding, TwoSpeciesShareTheArea) {
-  SurfaceMesh mesh = testing::patchMesh(200.0, 100.0);
-  for (Index v = 0; v < mesh.numVertices(); ++v)
-    if (!mesh.isBoundaryVertex(v)) mesh.positions()[v] += Vec3(23.0, -14.0, 0.0);
+  const SurfaceMesh mesh = testing::irregularSmallPatch();
   const SubvolumeGraph g = dualCellGraph(mesh).graph;
   const Index n = g.count();
   double mean_cell = 0.0;
@@ -139,25 +138,13 @@ TEST_P(Crowding, TwoSpeciesShareTheArea) {
   std::vector<int> start(3 * static_cast<std::size_t>(n), 0);
   start[3 * p0 + 1] = start[3 * p0 + 2] = 1;
   engine->setSurface(0, g, std::vector<Index>(static_cast<std::size_t>(n), 0), start);
-  std::vector<int> samples;
-  for (int k = 0; k < 8000; ++k) {
-    engine->advance(engine->time() + 0.04);
-    Index p = -1, q = -1;
-    for (Index v = 0; v < n; ++v) {
-      if (engine->copies(engine->regionStart(1) + v, 1) == 1) p = v;
-      if (engine->copies(engine->regionStart(1) + v, 2) == 1) q = v;
-    }
-    ASSERT_TRUE(p >= 0 && q >= 0);
+  const std::vector<int> samples = chemtest::sampleTwoCopies(*engine, n, 8000, 0.04);
+  for (int a : samples) {
+    const Index p = a / n, q = a % n;
     ASSERT_TRUE(fits(p, q)) << "both copies in cell " << p << " of " << g.size[p] / mean_cell << " mean cells";
-    samples.push_back(static_cast<int>(p * n + q));
   }
-  std::vector<double> prob(static_cast<std::size_t>(n * n), 0.0);
-  double z = 0.0;
-  for (Index p = 0; p < n; ++p)
-    for (Index q = 0; q < n; ++q)
-      if (fits(p, q)) z += prob[p * n + q] = g.size[p] * g.size[q];
-  const chemtest::ChiSquare fit =
-      chemtest::goodnessOfFit(samples, [&](int a) { return a < static_cast<int>(prob.size()) ? prob[a] / z : 0.0; });
+  const chemtest::ChiSquare fit = chemtest::fitTwoCopies(
+      samples, n, [&](Index p, Index q) { return fits(p, q) ? g.size[p] * g.size[q] : 0.0; });
   EXPECT_GT(fit.p, 1e-3) << "chi2 " << fit.statistic << " on " << fit.dof << " dof";
 }
 

@@ -24,6 +24,7 @@
 
 #include "chem/chem_statistics.hpp"
 #include "chem/chemistry_engine.hpp"
+#include "chem/two_copies.hpp"
 #include "sim/pair_interaction.hpp"
 #include "mesh/planar_patch.hpp"
 #include "sim/surface_graph.hpp"
@@ -76,9 +77,7 @@ struct SmallPatch {
   // arrival energies a_j(m) in onsite_mean ± 1.5 k_BT, rows of 0–3 values (crowded
   // curvature sensing's form), F_j(N) = Σ_{m<N} a_j(min(m, row end)).
   SmallPatch(int most, double strength, bool onsite = false, double onsite_mean = 0.0) {
-    SurfaceMesh mesh = testing::patchMesh(200.0, 100.0);
-    for (Index v = 0; v < mesh.numVertices(); ++v)
-      if (!mesh.isBoundaryVertex(v)) mesh.positions()[v] += Vec3(23.0, -14.0, 0.0);
+    const SurfaceMesh mesh = testing::irregularSmallPatch();
     graph = dualCellGraph(mesh).graph;
     const Index n = graph.count();
     for (double a : graph.size) mean_cell += a / static_cast<double>(n);
@@ -288,23 +287,9 @@ TEST_P(PairStationary, TwoCoupledSpeciesFollowTheirCrossEnergy) {
       if (patch.graph.target[e] == q) k = cross.pair[e];
     return std::log(patch.graph.size[p]) - patch.interaction.potential[p] + std::log(patch.graph.size[q]) - k;
   };
-  std::vector<int> samples;
-  for (int k = 0; k < 8000; ++k) {
-    engine->advance(engine->time() + 0.04);
-    Index p = -1, q = -1;
-    for (Index v = 0; v < n; ++v) {
-      if (engine->copies(engine->regionStart(1) + v, 1) == 1) p = v;
-      if (engine->copies(engine->regionStart(1) + v, 2) == 1) q = v;
-    }
-    ASSERT_TRUE(p >= 0 && q >= 0);
-    samples.push_back(static_cast<int>(p * n + q));
-  }
-  std::vector<double> prob(static_cast<std::size_t>(n * n));
-  double z = 0.0;
-  for (Index p = 0; p < n; ++p)
-    for (Index q = 0; q < n; ++q) z += prob[p * n + q] = std::exp(log_weight(p, q));
+  const std::vector<int> samples = chemtest::sampleTwoCopies(*engine, n, 8000, 0.04);
   const chemtest::ChiSquare fit =
-      chemtest::goodnessOfFit(samples, [&](int a) { return a < static_cast<int>(prob.size()) ? prob[a] / z : 0.0; });
+      chemtest::fitTwoCopies(samples, n, [&](Index p, Index q) { return std::exp(log_weight(p, q)); });
   EXPECT_GT(fit.p, 1e-3) << "chi2 " << fit.statistic << " on " << fit.dof << " dof";
 }
 
