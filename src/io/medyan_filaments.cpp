@@ -183,32 +183,10 @@ void Translator::motors() {
                                 "motor.{}.step_size = {} nm (the binding-site spacing), walk_rate = {} x {} / {} = {:.4g} "
                                 "/s (same mean speed)",
                                 b.walk, head_step, i, site_nm, b.walk, head_step, site_nm, walk));
-    std::string utype = "LOWDUTYCATCH";
-    if (const Entry* e = find("DMUNBINDINGTYPE"); e && i < e->values.size()) utype = upperCase(e->values[i]);
-    if (const auto f = listValue("DMUNBINDINGFORCE", i)) {
-      if (utype == "LOWDUTYCATCH") {
-        toml_ << "catch_force = " << num(*f) << "\n";
-        done(whereOf("DMUNBINDINGFORCE"), fmt::format("DMUNBINDINGTYPE LOWDUTYCATCH, DMUNBINDINGFORCE -> "
-                                                      "motor.{}.catch_force = {} pN",
-                                                      i, *f));
-      } else {
-        skip(whereOf("DMUNBINDINGTYPE"), fmt::format("DMUNBINDINGTYPE {}: cortex's motors have the catch bond "
-                                                     "(LOWDUTYCATCH) only",
-                                                     utype));
-      }
-    }
-    std::string wtype = "LOWDUTYSTALL";
-    if (const Entry* e = find("DMWALKINGTYPE"); e && i < e->values.size()) wtype = upperCase(e->values[i]);
-    if (const auto f = listValue("DMWALKINGFORCE", i)) {
-      if (wtype == "LOWDUTYSTALL") {
-        toml_ << "stall_force = " << num(*f) << "\n";
-        done(whereOf("DMWALKINGFORCE"), fmt::format("DMWALKINGTYPE LOWDUTYSTALL, DMWALKINGFORCE -> "
-                                                    "motor.{}.stall_force = {} pN",
-                                                    i, *f));
-      } else {
-        skip(whereOf("DMWALKINGTYPE"), fmt::format("DMWALKINGTYPE {}: cortex's walking follows the Hill stall law", wtype));
-      }
-    }
+    motorForce(i, "DMUNBINDINGTYPE", "LOWDUTYCATCH", "DMUNBINDINGFORCE", "catch_force",
+               "cortex's motors have the catch bond (LOWDUTYCATCH) only");
+    motorForce(i, "DMWALKINGTYPE", "LOWDUTYSTALL", "DMWALKINGFORCE", "stall_force",
+               "cortex's walking follows the Hill stall law");
     const auto hmin = listValue("NUMMOTORHEADSMIN", i), hmax = listValue("NUMMOTORHEADSMAX", i);
     if (hmin && hmax && *hmin >= 1 && *hmax >= *hmin) {
       toml_ << "heads_min = " << static_cast<long long>(*hmin) << "\nheads_max = " << static_cast<long long>(*hmax)
@@ -225,6 +203,20 @@ void Translator::motors() {
   for (const char* k : {"MSTRETCHINGTYPE", "MSTRETCHINGFFTYPE", "LSTRETCHINGTYPE", "LSTRETCHINGFFTYPE"})
     if (const auto w = word(k); w && upperCase(*w) != "HARMONIC")
       skip(whereOf(k), fmt::format("{} {}: cortex's linker and motor springs are harmonic", k, *w));
+}
+
+void Translator::motorForce(std::size_t i, const char* type_key, const char* supported, const char* force_key,
+                            const char* toml_key, const char* unsupported) {
+  std::string type = supported;
+  if (const Entry* e = find(type_key); e && i < e->values.size()) type = upperCase(e->values[i]);
+  const auto f = listValue(force_key, i);
+  if (!f) return;
+  if (type != supported) {
+    skip(whereOf(type_key), fmt::format("{} {}: {}", type_key, type, unsupported));
+    return;
+  }
+  toml_ << toml_key << " = " << num(*f) << "\n";
+  done(whereOf(force_key), fmt::format("{} {}, {} -> motor.{}.{} = {} pN", type_key, supported, force_key, i, toml_key, *f));
 }
 
 void Translator::branchers() {

@@ -88,6 +88,11 @@ class Translator {
   void motors();
   // The [[linker]] or [[motor]] table's head, shared by both: species, range, rates.
   void openBinder(const char* table, const char* reaction, const Binder& b, std::size_t i);
+  // A motor's force law: `type_key` names it per motor type (default `supported`, the
+  // one cortex has); then `force_key`'s entry i becomes motor.i.`toml_key` (pN), and
+  // another type is listed untranslated with `unsupported` as the reason.
+  void motorForce(std::size_t i, const char* type_key, const char* supported, const char* force_key,
+                  const char* toml_key, const char* unsupported);
   void branchers();
   void everythingElse();
 
