@@ -60,10 +60,8 @@ def run(args):
     for label, outdir in zip(labels, args.outdir):
         rows, name, species, split = table(outdir, args.membrane, args.species, args.split)
         tables.append(rows)
-        print(f"# {label}: membrane '{name}', species '{species}', past x = {split:g} nm")
-        print(f"{'t (s)':>8} {'fraction':>9} {'right':>9} {'total':>9}")
-        for t, f, right, total in rows:
-            print(f"{t:8.3f} {f:9.3f} {right:9.0f} {total:9.0f}")
+        common.print_rows(f"{label}: membrane '{name}', species '{species}', past x = {split:g} nm",
+                          [("t (s)", "8.3f"), ("fraction", "9.3f"), ("right", "9.0f"), ("total", "9.0f")], rows)
         t_e = crossing_time(rows)
         print(f"{label}: fraction {rows[-1, 1]:.3f} at t = {rows[-1, 0]:g} s; reaches 1 - 1/e at "
               + (f"t = {t_e:g} s" if np.isfinite(t_e) else "no snapshot"))

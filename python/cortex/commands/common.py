@@ -151,6 +151,16 @@ def run_labels(args):
     return [os.path.basename(os.path.normpath(d)) for d in args.outdir]
 
 
+def print_rows(title, columns, rows):
+    """Prints '# title', a header of right-aligned column names and each row of a table
+    over time; `columns`: (name, format) pairs such as ("t (s)", "8.3f"), whose leading
+    number is the column's width."""
+    print(f"# {title}")
+    print(" ".join(f"{name:>{int(spec.split('.')[0])}}" for name, spec in columns))
+    for row in rows:
+        print(" ".join(f"{value:{spec}}" for value, (_, spec) in zip(row, columns)))
+
+
 def write_tables_csv(path, columns, labels, tables, formats=None):
     """Per-run tables as one CSV: a run column, then `columns`; values as repr(float)
     unless `formats` gives a function per column."""

@@ -88,10 +88,9 @@ def run(args):
     for label, outdir in zip(labels, args.outdir):
         rows, name = table(outdir, args.membrane, args.within)
         tables.append(rows)
-        print(f"# {label}: membrane '{name}', filaments within {args.within:g} nm of it")
-        print(f"{'t (s)':>8} {'near':>6} {'|cos|':>6} {'excess area':>12} {'r sd/mean':>10}")
-        for r in rows:
-            print(f"{r[0]:8.3f} {r[1]:6.3f} {r[2]:6.3f} {r[3]:12.5f} {r[4]:10.5f}")
+        common.print_rows(f"{label}: membrane '{name}', filaments within {args.within:g} nm of it",
+                          [("t (s)", "8.3f"), ("near", "6.3f"), ("|cos|", "6.3f"), ("excess area", "12.5f"),
+                           ("r sd/mean", "10.5f")], rows)
         last = rows[-1]
         print(f"{label}: at t = {last[0]:g} s {100 * last[1]:.0f}% of the filament length within {args.within:g} nm "
               f"of the membrane, |cos| to its normal {last[2]:.2f} (random: 0.50), excess area {last[3]:.4f}, "

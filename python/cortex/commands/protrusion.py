@@ -72,10 +72,9 @@ def run(args):
     for label, outdir in zip(labels, args.outdir):
         rows, name = table(outdir, args.membrane)
         tables.append(rows)
-        print(f"# {label}: membrane '{name}'")
-        print(f"{'t (s)':>8} {'height (nm)':>12} {'tip (nm)':>9} {'length (nm)':>12}")
-        for t, h, tip, length in rows:
-            print(f"{t:8.3f} {h:12.1f} {tip:9.1f} {length:12.0f}")
+        common.print_rows(f"{label}: membrane '{name}'",
+                          [("t (s)", "8.3f"), ("height (nm)", "12.1f"), ("tip (nm)", "9.1f"), ("length (nm)", "12.0f")],
+                          rows)
         print(f"{label}: height {rows[0, 1]:.1f} -> {rows[-1, 1]:.1f} nm, growth rate over the second half "
               f"{growth_rate(rows):.1f} nm/s")
     if args.csv:

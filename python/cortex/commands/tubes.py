@@ -88,10 +88,9 @@ def run(args):
     for label, outdir in zip(labels, args.outdir):
         rows, name, expected = table(outdir, args.membrane)
         tables.append(rows)
-        print(f"# {label}: membrane '{name}'")
-        print(f"{'t (s)':>8} {'body r (nm)':>12} {'+ length':>9} {'+ radius':>9} {'- length':>9} {'- radius':>9}")
-        for r in rows:
-            print(f"{r[0]:8.3f} {r[1]:12.1f} {r[2]:9.1f} {r[3]:9.1f} {r[4]:9.1f} {r[5]:9.1f}")
+        common.print_rows(f"{label}: membrane '{name}'",
+                          [("t (s)", "8.3f"), ("body r (nm)", "12.1f"), ("+ length", "9.1f"), ("+ radius", "9.1f"),
+                           ("- length", "9.1f"), ("- radius", "9.1f")], rows)
         last = rows[-1]
         at = f" (√(κ/2γ) = {expected:.1f} nm)" if expected else ""
         print(f"{label}: at t = {last[0]:g} s tubes {last[2]:.0f} and {last[4]:.0f} nm long, radii {last[3]:.1f} "
