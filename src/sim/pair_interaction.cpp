@@ -9,11 +9,8 @@ PairMoments gaussianPairMoments(double height, double range) {
   return {-std::numbers::pi * height * s2, -std::numbers::pi * height * s2 * s2 / 4.0};
 }
 
-ChemistryEngine::SurfaceInteraction pairInteraction(const SubvolumeGraph& graph, const PairMoments& m,
-                                                    std::vector<double> potential, DriftScheme scheme) {
-  ChemistryEngine::SurfaceInteraction out;
-  out.potential = std::move(potential);
-  out.scheme = scheme;
+PairKernel pairKernel(const SubvolumeGraph& graph, const PairMoments& m) {
+  PairKernel out;
   out.self.assign(static_cast<std::size_t>(graph.count()), 0.0);
   out.pair.assign(static_cast<std::size_t>(graph.numEdges()), 0.0);
   // a_jk from each end (|C_j| / l²_jk), averaged with its reverse so K is symmetric to
@@ -31,6 +28,17 @@ ChemistryEngine::SurfaceInteraction pairInteraction(const SubvolumeGraph& graph,
     }
     out.self[j] = m.mu0 / graph.size[j] - m.mu2 * row / (graph.size[j] * graph.size[j]);
   }
+  return out;
+}
+
+ChemistryEngine::SurfaceInteraction pairInteraction(const SubvolumeGraph& graph, const PairMoments& m,
+                                                    std::vector<double> potential, DriftScheme scheme) {
+  PairKernel k = pairKernel(graph, m);
+  ChemistryEngine::SurfaceInteraction out;
+  out.potential = std::move(potential);
+  out.scheme = scheme;
+  out.self = std::move(k.self);
+  out.pair = std::move(k.pair);
   return out;
 }
 

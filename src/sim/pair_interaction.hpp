@@ -27,8 +27,14 @@ struct PairMoments {
 // μ₀ and μ₂ of μ(r) = −height e^{−r²/range²} (height in k_BT, range σ in nm).
 PairMoments gaussianPairMoments(double height, double range);
 
-// The interaction on `graph` (a surface's dual cells) with external potential
-// `potential` (k_BT per subvolume).
+// K on `graph` (a surface's dual cells): K_jj per subvolume, K_jk per directed edge. A
+// species' own attraction and the cross attraction of two species are both this kernel.
+struct PairKernel {
+  std::vector<double> self, pair;
+};
+PairKernel pairKernel(const SubvolumeGraph& graph, const PairMoments& moments);
+
+// The interaction on `graph` with external potential `potential` (k_BT per subvolume).
 ChemistryEngine::SurfaceInteraction pairInteraction(const SubvolumeGraph& graph, const PairMoments& moments,
                                                     std::vector<double> potential, DriftScheme scheme);
 

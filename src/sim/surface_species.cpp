@@ -166,9 +166,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
         const auto other = static_cast<std::size_t>(
             std::find_if(s.configs.begin(), s.configs.end(), [&](const auto& c) { return c.name == x.species; }) -
             s.configs.begin());
-        ChemistryEngine::SurfaceInteraction kernel =
-            pairInteraction(cells.graph, gaussianPairMoments(x.interaction.height, x.interaction.range),
-                            std::vector<double>(static_cast<std::size_t>(n), 0.0), DriftScheme::kExponential);
+        PairKernel kernel = pairKernel(cells.graph, gaussianPairMoments(x.interaction.height, x.interaction.range));
         engine_.setSurfaceCoupling(s.species[j], s.species[other], std::move(kernel.self), std::move(kernel.pair));
       }
     setUnbindingFactors(static_cast<Index>(k), potential, n, system.time());

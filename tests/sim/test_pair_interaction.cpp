@@ -262,9 +262,7 @@ TEST_P(PairStationary, ReactionsOfInteractingCopiesKeepTheFieldExact) {
 TEST_P(PairStationary, TwoCoupledSpeciesFollowTheirCrossEnergy) {
   const SmallPatch patch(1, 0.0);
   const Index n = patch.graph.count();
-  const ChemistryEngine::SurfaceInteraction cross =
-      pairInteraction(patch.graph, gaussianPairMoments(2.0 * patch.mean_cell / (M_PI * 60.0 * 60.0), 60.0),
-                      std::vector<double>(static_cast<std::size_t>(n), 0.0), DriftScheme::kExponential);
+  const PairKernel cross = pairKernel(patch.graph, gaussianPairMoments(2.0 * patch.mean_cell / (M_PI * 60.0 * 60.0), 60.0));
   ChemistryModel model;
   model.surfaces = {"patch"};
   model.species = {SpeciesDef{"G", 0.0}, SpeciesDef{"P", 1.0e6, 0}, SpeciesDef{"Q", 1.0e6, 0}};
@@ -274,10 +272,8 @@ TEST_P(PairStationary, TwoCoupledSpeciesFollowTheirCrossEnergy) {
   start[3 * 5 + 2] = 1;
   engine->setSurface(0, patch.graph, std::vector<Index>(static_cast<std::size_t>(n), 0), start);
   engine->setSurfaceInteraction(1, patch.interaction);
-  ChemistryEngine::SurfaceInteraction plain = cross;
-  plain.self.assign(plain.self.size(), 0.0);
-  plain.pair.assign(plain.pair.size(), 0.0);
-  engine->setSurfaceInteraction(2, plain);
+  engine->setSurfaceInteraction(2, pairInteraction(patch.graph, PairMoments{}, std::vector<double>(static_cast<std::size_t>(n), 0.0),
+                                                   DriftScheme::kExponential));
   engine->setSurfaceCoupling(1, 2, cross.self, cross.pair);
   EXPECT_THROW(engine->setSurfaceCoupling(2, 1, cross.self, cross.pair), std::invalid_argument);
 
