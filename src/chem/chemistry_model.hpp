@@ -22,11 +22,18 @@ struct SpeciesDef {
   std::string name;
   double diffusion = 0.0;  // nm^2/s
   Index surface = -1;      // -1: a 3D species; k: lives on ChemistryModel::surfaces[k]
-  // Surface species only: the area one copy covers (nm^2). A subvolume of area A then
-  // holds at most floor(A / footprint) copies (the crowding cap n <= n0 of thesis 3.2.1):
-  // hops into a full one and reactions that would overfill it are void events. 0: no cap.
+  // Surface species only: the area one copy covers (nm^2). The copies of all species with
+  // a footprint share a subvolume's area A: Σ n_s footprint_s ≤ crowdingRoom(A) (one
+  // species alone: at most floor(A / footprint) copies; the crowding cap n <= n0 of thesis
+  // 3.2.1). Hops into a full one and reactions that would overfill it are void events.
+  // 0: no cap, and no area taken.
   double footprint = 0.0;
 };
+
+// The area copies may cover in a subvolume of area A: A with 1e-12 of slack, so that
+// exactly floor(A / a) copies of footprint a fit whatever the rounding of n·a. The
+// engine's cap and the initial placement (sim/surface_species.hpp) both use it.
+inline double crowdingRoom(double area) { return area * (1.0 + 1e-12); }
 
 // The side of a closed membrane a species is confined to (thesis 2.2.4.2); an empty
 // membrane name means unconfined. Kept apart from SpeciesDef: the engine only sees the

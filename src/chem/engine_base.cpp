@@ -111,7 +111,7 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
   for (Index k = 0; k < regions; ++k) {
     if (crowding_[k].empty()) continue;
     if (room_.empty()) room_.assign(static_cast<std::size_t>(n), 0.0);
-    for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) room_[i] = size_[i] * (1.0 + 1e-12);
+    for (Index i = region_start_[k]; i < region_start_[k + 1]; ++i) room_[i] = crowdingRoom(size_[i]);
   }
   diffusing_.assign(regions, {});
   for (Index s = 0; s < S_; ++s)

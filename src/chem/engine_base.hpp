@@ -115,12 +115,10 @@ class EngineBase : public ChemistryEngine {
 
   // Lets reaction r's hook carry it out in subvolume i; false: the event is void.
   bool hookAccepts(Index r, Index i) { return !hooks_[r] || hooks_[r]->fired(r, i, *this, rng_); }
-  // The crowding cap (SpeciesDef::footprint): the copies of every species with a footprint
-  // share their subvolume's area, Σ_s n_s a_s ≤ |C_i| (one species alone: at most
-  // ⌊|C_i|/a⌋ copies). Whether `delta` more copies of s would overfill subvolume i, and
-  // whether reaction r may fire in i without overfilling it (by its net change of covered
-  // area). A hop or reaction refused here is a void event: its propensity is an upper
-  // bound of the true one and this the exact thinning.
+  // The crowding cap (SpeciesDef::footprint): whether `delta` more copies of s would
+  // overfill subvolume i, and whether reaction r may fire in i without overfilling it (by
+  // its net change of covered area). A hop or reaction refused here is a void event: its
+  // propensity is an upper bound of the true one and this the exact thinning.
   bool crowded(Index i, Index s, int delta) const {
     if (room_.empty() || !(species_[s].footprint > 0.0)) return false;
     return covered(i) + delta * species_[s].footprint > room_[i];
@@ -242,9 +240,8 @@ class EngineBase : public ChemistryEngine {
   std::vector<std::uint32_t> mark_;
   std::uint32_t mark_round_ = 0;
   std::vector<Index> near_, reach_;
-  // The crowding cap: per subvolume its area |C_i| (with 1e-12 of slack, so that exactly
-  // ⌊|C_i|/a⌋ copies of one species fit whatever the rounding of n·a), and per region the
-  // species with a footprint; both empty when no species has one.
+  // The crowding cap: per subvolume crowdingRoom(|C_i|), and per region the species with a
+  // footprint; both empty when no species has one.
   std::vector<double> room_;
   std::vector<std::vector<Index>> crowding_;
 };

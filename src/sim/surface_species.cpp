@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "chem/chemistry_model.hpp"
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "membrane/curvature.hpp"
@@ -45,11 +46,11 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
       }
       // With a footprint, the copies of all such species share a vertex's area as the
       // engine counts them (SpeciesDef::footprint): draws onto a full vertex are drawn again.
-      auto fits = [&](Index v) { return !(s.footprint > 0.0) || covered[v] + s.footprint <= area[v] * (1.0 + 1e-12); };
+      auto fits = [&](Index v) { return !(s.footprint > 0.0) || covered[v] + s.footprint <= crowdingRoom(area[v]); };
       if (s.footprint > 0.0) {
         double room = 0.0;
         for (Index v = 0; v < n; ++v)
-          if (inside[v]) room += std::floor(std::max(area[v] * (1.0 + 1e-12) - covered[v], 0.0) / s.footprint);
+          if (inside[v]) room += std::floor(std::max(crowdingRoom(area[v]) - covered[v], 0.0) / s.footprint);
         if (static_cast<double>(count) > 0.99 * room)
           throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
                                        "left by the species before it (keep them under 99% full)",
