@@ -103,6 +103,14 @@ class EngineBase : public ChemistryEngine {
   // e^{V_i + R_i − K_ii + a_i(N_i − 1)}: the factor on the unbinding of interacting species
   // s from surface subvolume i (the energy its copy leaves behind).
   double unbindingFactor(Index i, Index s) const;
+  // Whether the field of interacting species u reads the copies of s (u is s or coupled
+  // to it, setSurfaceCoupling).
+  bool fieldReads(Index u, Index s) const {
+    if (u == s) return true;
+    for (const Coupling& c : couplings_[s])
+      if (c.other == u) return true;
+    return false;
+  }
   // How many of interactionChanged's subvolumes come first as those whose field changed.
   std::size_t interactionFieldsChanged() const { return near_.size(); }
   // Per reaction: the interacting species it unbinds, −1 for none; empty if none does.

@@ -98,7 +98,7 @@ double NextSubvolumeEngine::diffusionSum(Index i) const {
       sub_[v].diffusion = diffusionSum(v);
       if (k < fields && !unbinding_.empty())  // unbinding reads the field (s's or a coupled one's)
         for (Index r = 0; r < R_; ++r)
-          if (unbinding_[r] >= 0) setPropensity(v, r);
+          if (unbinding_[r] >= 0 && fieldReads(unbinding_[r], s)) setPropensity(v, r);
     });
   }
 }
