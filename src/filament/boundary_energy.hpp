@@ -22,7 +22,9 @@ Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x);
 class WallEndLoads final : public EndLoadProbe {
  public:
   explicit WallEndLoads(BoundaryConfig boundary) : boundary_(boundary) {}
-  Vec3 forceAt(const Vec3& point, bool /*plus_end*/) const override { return boundaryForce(boundary_, point); }
+  Vec3 forceAt(Index /*filament*/, const Vec3& point, bool /*plus_end*/) const override {
+    return boundaryForce(boundary_, point);
+  }
 
  private:
   BoundaryConfig boundary_;

@@ -69,6 +69,22 @@ SegmentClosestPoints closestPoints(const Vec3& p0, const Vec3& p1, const Vec3& q
   return {s, t, (p0 + s * d1) - (q0 + t * d2)};
 }
 
+PairExclusion pairExclusion(const FilamentType& a, const FilamentType& b) {
+  return {0.5 * (a.excluded_volume_stiffness + b.excluded_volume_stiffness),
+          0.5 * (a.excluded_volume_distance + b.excluded_volume_distance)};
+}
+
+std::optional<CylinderContact> cylinderContact(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1,
+                                               const PairExclusion& pair) {
+  const SegmentClosestPoints cp = closestPoints(p0, p1, q0, q1);
+  const double d2 = cp.delta.squaredNorm();
+  if (d2 >= pair.distance * pair.distance) return std::nullopt;
+  const double d = std::sqrt(d2);
+  const double overlap = pair.distance - d;
+  const Vec3 dir = d > kCoincident ? Vec3(cp.delta / d) : separationDirection(p1 - p0, q1 - q0);
+  return CylinderContact{0.5 * pair.stiffness * overlap * overlap, (pair.stiffness * overlap) * dir, cp.s, cp.t};
+}
+
 CylinderExclusionEnergy::CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
                                                  double skin)
     : FilamentTerm(layout, "excluded_volume"), types_(types), skin_(skin) {}
@@ -170,16 +186,14 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
             if (j <= i) continue;
             const Cylinder& cj = cyl[j];
             if (ci.bead0 == cj.bead0 || ci.bead0 == cj.bead1 || ci.bead1 == cj.bead0 || ci.bead1 == cj.bead1) continue;
-            const FilamentType& tj = types_[cj.type];
-            const double d0 = 0.5 * (ti.excluded_volume_distance + tj.excluded_volume_distance);
-            const double reach = d0 + skin_;
+            const PairExclusion exclusion = pairExclusion(ti, types_[cj.type]);
+            const double reach = exclusion.distance + skin_;
             const double mid_reach = reach + half_length_[i] + half_length_[j];
             if ((midpoint_[i] - midpoint_[j]).squaredNorm() > mid_reach * mid_reach) continue;
             const double d2 = closestPoints(a0, a1, bead(cj.bead0), bead(cj.bead1)).delta.squaredNorm();
             if (d2 >= reach * reach) continue;
             if (!excluded_.empty() && std::binary_search(excluded_.begin(), excluded_.end(), pairKey(i, j))) continue;
-            pairs_.push_back(
-                {i, j, 0.5 * (ti.excluded_volume_stiffness + tj.excluded_volume_stiffness), d0, std::sqrt(d2)});
+            pairs_.push_back({i, j, exclusion, std::sqrt(d2)});
           }
         }
     // Pairs in (i, j) order whatever the cells were: sums over the list then depend only
@@ -190,7 +204,8 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
 }
 
 // With the closest-point parameters s, t held fixed (envelope theorem), delta = p - q is
-// linear in the four beads: dE/d(delta) = -k (d0 - d) delta/d, shared by the weights.
+// linear in the four beads: dE/d(delta) = -k (d0 - d) delta/d = -push, shared by the
+// weights.
 double CylinderExclusionEnergy::evaluate(const Evaluation& e) {
   const double* x = e.x + 3 * static_cast<std::size_t>(layout_.bead_offset);
   double* g = e.gradient ? e.gradient + 3 * static_cast<std::size_t>(layout_.bead_offset) : nullptr;
@@ -207,21 +222,16 @@ double CylinderExclusionEnergy::evaluate(const Evaluation& e) {
     // pair's distance shrank by at most the sum of those since the build: pairs that
     // were far enough apart then are still out of range, without their closest points.
     const double shrink = std::max(moved_[ca.bead0], moved_[ca.bead1]) + std::max(moved_[cb.bead0], moved_[cb.bead1]);
-    if (p.built - shrink >= p.distance) continue;
-    const Vec3 a0 = bead(ca.bead0), a1 = bead(ca.bead1), b0 = bead(cb.bead0), b1 = bead(cb.bead1);
-    const SegmentClosestPoints cp = closestPoints(a0, a1, b0, b1);
-    const double d2 = cp.delta.squaredNorm();
-    if (d2 >= p.distance * p.distance) continue;
-    const double d = std::sqrt(d2);
-    const double overlap = p.distance - d;
-    energy += 0.5 * p.stiffness * overlap * overlap;
+    if (p.built - shrink >= p.exclusion.distance) continue;
+    const std::optional<CylinderContact> c =
+        cylinderContact(bead(ca.bead0), bead(ca.bead1), bead(cb.bead0), bead(cb.bead1), p.exclusion);
+    if (!c) continue;
+    energy += c->energy;
     if (!g) continue;
-    const Vec3 dir = d > kCoincident ? Vec3(cp.delta / d) : separationDirection(a1 - a0, b1 - b0);
-    const Vec3 f = (-p.stiffness * overlap) * dir;
-    Eigen::Map<Vec3>(g + 3 * ca.bead0) += (1.0 - cp.s) * f;
-    Eigen::Map<Vec3>(g + 3 * ca.bead1) += cp.s * f;
-    Eigen::Map<Vec3>(g + 3 * cb.bead0) -= (1.0 - cp.t) * f;
-    Eigen::Map<Vec3>(g + 3 * cb.bead1) -= cp.t * f;
+    Eigen::Map<Vec3>(g + 3 * ca.bead0) -= (1.0 - c->s) * c->push;
+    Eigen::Map<Vec3>(g + 3 * ca.bead1) -= c->s * c->push;
+    Eigen::Map<Vec3>(g + 3 * cb.bead0) += (1.0 - c->t) * c->push;
+    Eigen::Map<Vec3>(g + 3 * cb.bead1) += c->t * c->push;
   }
   return energy;
 }

@@ -1,6 +1,7 @@
 // Steric repulsion between cylinders that share no bead: E = k/2 (d0 - d)^2 for d < d0,
 // d the distance between the closest points of the two segments, k and d0 the means of
-// the two types' excluded_volume_stiffness and excluded_volume_distance.
+// the two types' excluded_volume_stiffness and excluded_volume_distance. A daughter's
+// first cylinder and the mother cylinder it starts on are not a pair.
 //
 // Pairs come from a Verlet-style list built with a cell list over cylinder midpoints.
 // A pair is listed when its segment distance at the build is below d0 + skin; since
@@ -13,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,24 @@ struct SegmentClosestPoints {
 };
 SegmentClosestPoints closestPoints(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
+// The exclusion between cylinders of types a and b: the means of their stiffnesses and
+// distances.
+struct PairExclusion {
+  double stiffness, distance;  // pN/nm, nm
+};
+PairExclusion pairExclusion(const FilamentType& a, const FilamentType& b);
+
+// The push between segments p and q closer than the pair's distance d0: energy
+// k/2 (d0 - d)^2 and the force on p's closest point (q's is its opposite), which the
+// beads share with weights 1 - s, s (and 1 - t, t). None when d >= d0.
+struct CylinderContact {
+  double energy;  // pN nm
+  Vec3 push;      // pN
+  double s, t;
+};
+std::optional<CylinderContact> cylinderContact(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1,
+                                               const PairExclusion& pair);
+
 class CylinderExclusionEnergy final : public FilamentTerm {
  public:
   CylinderExclusionEnergy(const FilamentLayout& layout, const std::vector<FilamentType>& types,
@@ -44,7 +64,7 @@ class CylinderExclusionEnergy final : public FilamentTerm {
  private:
   struct Pair {
     Index a, b;
-    double stiffness, distance;
+    PairExclusion exclusion;
     double built;  // closest distance at the last build
   };
   // Fills moved_ with each bead's displacement since the last build and returns the

@@ -169,7 +169,7 @@ void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end
   for (std::size_t i = 0; i < fils.size(); ++i)
     for (int e = 0; e < 2; ++e) {
       const Index f = static_cast<Index>(i);
-      if (probe_) probe_force_[i][e] = probe_->forceAt(endBead(f, e == 1), e == 1);
+      if (probe_) probe_force_[i][e] = probe_->forceAt(f, endBead(f, e == 1), e == 1);
       loadEnd(f, e == 1, end_forces[i][e]);
     }
 }
@@ -193,7 +193,7 @@ void FilamentChemistry::loadEnd(Index i, bool plus_end, const Vec3& force) {
 void FilamentChemistry::reload(Index i, bool plus_end) {
   if (!probe_ || static_cast<std::size_t>(i) >= relaxed_force_.size()) return;  // new filaments: unloaded
   const int e = plus_end ? 1 : 0;
-  const Vec3 probed = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(endBead(i, plus_end), plus_end);
+  const Vec3 probed = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(i, endBead(i, plus_end), plus_end);
   const Filament& f = net_.filaments()[i];
   const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
   loadEnd(i, plus_end, probed.dot(u) < relaxed_force_[i][e].dot(u) ? probed : relaxed_force_[i][e]);

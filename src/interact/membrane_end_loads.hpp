@@ -16,8 +16,8 @@ class MembraneEndLoads final : public EndLoadProbe {
   explicit MembraneEndLoads(std::vector<const MembraneBeadExclusion*> terms) : terms_(std::move(terms)) {}
   // After every relaxation (the membranes moved or were remeshed): their triangles as
   // they now stand.
-  void update();
-  Vec3 forceAt(const Vec3& point, bool plus_end) const override;
+  void update() override;
+  Vec3 forceAt(Index filament, const Vec3& point, bool plus_end) const override;
 
  private:
   std::vector<const MembraneBeadExclusion*> terms_;

@@ -5,7 +5,7 @@
 namespace cortex {
 
 FilamentFeedback::FilamentFeedback(FilamentNetwork& network, FilamentTerms terms, FilamentChemistry& chemistry,
-                                   MembraneEndLoads* end_loads)
+                                   EndLoadProbe* end_loads)
     : network_(network), terms_(terms), chemistry_(chemistry), end_loads_(end_loads) {}
 
 void FilamentFeedback::update(System& system) { apply(system.coordinates(), system.forceField()); }

@@ -9,17 +9,17 @@
 
 #include "filament/filament_chemistry.hpp"
 #include "filament/filament_terms.hpp"
-#include "interact/membrane_end_loads.hpp"
+#include "filament/end_load_probe.hpp"
 #include "sim/feedback.hpp"
 
 namespace cortex {
 
 class FilamentFeedback final : public Feedback {
  public:
-  // `end_loads` (may be null): the membranes' push on ends between relaxations, brought
-  // up to date here before the chemistry reads it.
+  // `end_loads` (may be null): the chemistry's probe of the loads on ends between
+  // relaxations, brought up to date here before the chemistry reads it.
   FilamentFeedback(FilamentNetwork& network, FilamentTerms terms, FilamentChemistry& chemistry,
-                   MembraneEndLoads* end_loads = nullptr);
+                   EndLoadProbe* end_loads = nullptr);
   void update(System& system) override;
   // The same from coordinates x (the network laid out in them) and the force field that
   // holds the filament terms.
@@ -29,7 +29,7 @@ class FilamentFeedback final : public Feedback {
   FilamentNetwork& network_;
   FilamentTerms terms_;
   FilamentChemistry& chemistry_;
-  MembraneEndLoads* end_loads_;
+  EndLoadProbe* end_loads_;
 };
 
 }  // namespace cortex

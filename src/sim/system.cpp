@@ -127,7 +127,7 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   }
   if (filament_chemistry_) {
     filament_chemistry_->attach(*chemistry_);
-    std::vector<const EndLoadProbe*> probes;
+    std::vector<EndLoadProbe*> probes;
     if (!coupling_terms_.empty()) {
       end_loads_ = std::make_unique<MembraneEndLoads>(
           std::vector<const MembraneBeadExclusion*>(coupling_terms_.begin(), coupling_terms_.end()));
@@ -137,12 +137,12 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
       wall_loads_ = std::make_unique<WallEndLoads>(*boundary);
       probes.push_back(wall_loads_.get());
     }
-    if (!probes.empty()) {
-      end_load_sum_ = std::make_unique<EndLoadSum>(std::move(probes));
-      filament_chemistry_->setEndLoadProbe(end_load_sum_.get());
-    }
+    cylinder_loads_ = std::make_unique<CylinderExclusionEndLoads>(*filaments_);
+    probes.push_back(cylinder_loads_.get());
+    end_load_sum_ = std::make_unique<EndLoadSum>(std::move(probes));
+    filament_chemistry_->setEndLoadProbe(end_load_sum_.get());
     feedback_.push_back(
-        std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_loads_.get()));
+        std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_load_sum_.get()));
   }
 }
 

@@ -16,6 +16,7 @@
 #include "filament/filament_network.hpp"
 #include "filament/filament_terms.hpp"
 #include "interact/membrane_bead_exclusion.hpp"
+#include "filament/excluded_volume_end_loads.hpp"
 #include "interact/membrane_end_loads.hpp"
 #include "mech/force_field.hpp"
 #include "membrane/membrane.hpp"
@@ -91,9 +92,11 @@ class System {
   ForceField force_field_;
   std::vector<MembraneBeadExclusion*> coupling_terms_;
   // The loads that follow a filament end within a window (filament/end_load_probe.hpp):
-  // membranes' (with coupling terms), walls' (with [boundary]), and their sum.
+  // membranes' (with coupling terms), walls' (with [boundary]), the other cylinders', and
+  // their sum.
   std::unique_ptr<MembraneEndLoads> end_loads_;
   std::unique_ptr<WallEndLoads> wall_loads_;
+  std::unique_ptr<CylinderExclusionEndLoads> cylinder_loads_;
   std::unique_ptr<EndLoadSum> end_load_sum_;
   CompartmentGrid grid_;
   ChemistryModel chemistry_model_;

@@ -97,7 +97,7 @@ TEST(FilamentRatchetLoad, IncludesExcludedVolumeFromOtherFilaments) {
 // plus end: force F0 e^(−(x_wall − x)/λ) against the growth direction.
 struct ExponentialWall final : public EndLoadProbe {
   double x_wall, f0 = 10.0, lambda = 2.7;
-  Vec3 forceAt(const Vec3& p, bool plus_end) const override {
+  Vec3 forceAt(Index /*filament*/, const Vec3& p, bool plus_end) const override {
     return plus_end ? Vec3(-f0 * std::exp(-(x_wall - p.x()) / lambda), 0.0, 0.0) : Vec3::Zero();
   }
 };
