@@ -105,6 +105,14 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
   Eigen::VectorXd g(u.size()), g_new(u.size()), u_new(u.size());
   double value = p.valueAndGradient(u, g);
   ++r.evaluations;
+  // A restoration that carried the shape into a forbidden state (infinite energy: e.g. a
+  // membrane onto a filament bead) counts as infeasible too: no line search can start
+  // from there, but the caller's smaller steps towards the targets may not go there.
+  if (!std::isfinite(value) && u != u_start) {
+    u = u_start;
+    r.stop_reason = kInfeasibleStart;
+    return r;
+  }
   Eigen::VectorXd lambda = frame.multipliers(g);
   Eigen::VectorXd res = m ? Eigen::VectorXd(g - frame.jac.transpose() * lambda) : g;
 

@@ -17,10 +17,12 @@ class Quadratic final : public ConstrainedProblem {
   double c = 1.0;
   double radius = -1.0;  // < 0: no sphere constraint
   bool exact_preconditioner = true;
+  double forbidden_above = INFINITY;  // u_0 beyond it: infinite energy (a forbidden region)
   Index size() const override { return static_cast<Index>(a.size()); }
   int numConstraints() const override { return radius < 0 ? 1 : 2; }
   double valueAndGradient(const Eigen::VectorXd& u, Eigen::VectorXd& g) override {
     g = a.cwiseProduct(u) - b;
+    if (u[0] > forbidden_above) return INFINITY;
     return 0.5 * u.dot(a.cwiseProduct(u)) - b.dot(u);
   }
   void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& cv, Eigen::MatrixXd& jac) override {
@@ -106,6 +108,29 @@ TEST(ConstrainedLbfgs, SatisfiesStationarityWithANonlinearConstraint) {
   EXPECT_NEAR(u.norm(), q.radius, 1e-9);
   const double lambda = r.multipliers[0], mu = r.multipliers[1];
   for (Index i = 0; i < 50; ++i) EXPECT_NEAR(q.a[i] * u[i] - q.b[i], lambda + 2.0 * mu * u[i], 1e-8) << i;
+}
+
+// A restoration that lands in a forbidden region (infinite energy: in a run, a membrane
+// pushed onto a filament bead by a volume target) is an infeasible start, u unchanged,
+// so that the caller approaches the target in steps (membrane/shape_relaxation.cpp); a
+// target whose restoration stays clear of the region is relaxed from there. Without
+// this, the line search started from the infinite energy and the run failed
+// (mutation-checked).
+TEST(ConstrainedLbfgs, ARestorationIntoAForbiddenRegionIsAnInfeasibleStart) {
+  Quadratic q = quadratic();
+  // From u = 0 the restoration onto sum u = c is u = c a^-1 / sum a^-1 (W = P^-1 J^T).
+  const double u0 = q.c / (q.a[0] * q.a.cwiseInverse().sum());
+  q.forbidden_above = 0.5 * u0;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(50);
+  ConstrainedLbfgsResult r = solve(q, u, 1e-10, 1e9);
+  EXPECT_EQ(r.stop_reason, kInfeasibleStart);
+  EXPECT_EQ(u, Eigen::VectorXd::Zero(50));
+  q.c *= 0.25;  // a quarter of the way: restored u_0 = u0 / 4, clear of the region
+  r = solve(q, u, 1e-10, 1e9);
+  EXPECT_NE(r.stop_reason, kInfeasibleStart);
+  EXPECT_GT(r.iterations, 0);
+  EXPECT_LE(u[0], q.forbidden_above);
+  EXPECT_NEAR(u.sum(), q.c, 1e-10);
 }
 
 }  // namespace
