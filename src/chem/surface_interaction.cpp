@@ -157,8 +157,9 @@ void EngineBase::computeInteractionRates(Index s, Index i) {
 
 // R changes at a, b and their neighbours (K has the graph's sparsity), for s and for the
 // species coupled to it: every rate of theirs out of those changes. A vertex one ring
-// further keeps its own R, so only its edges into them change; its hopOut is summed anew from the stored edge rates (in edge order, so it is
-// the same number computeHopRates gives).
+// further keeps its own R, so only its edges into them change; its hopOut is summed anew
+// from the stored edge rates (in edge order, so it is the same number computeHopRates
+// gives).
 const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index b) {
   if (mark_.size() != static_cast<std::size_t>(N_) || mark_round_ >= UINT32_MAX - 2) {
     mark_.assign(N_, 0);

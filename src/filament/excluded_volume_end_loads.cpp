@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "filament/cell_grid.hpp"
 #include "filament/excluded_volume_energy.hpp"
 
 namespace cortex {
@@ -26,20 +27,12 @@ void CylinderExclusionEndLoads::update() {
       hi = hi.cwiseMax(b);
     }
   }
-  // Cells about a cylinder long (a cylinder's padded box then touches 2-3 per axis), but
-  // no more of them than a few per cylinder, so that far-flung filaments do not make the
-  // grid huge.
-  cell_ = std::max({longest, 2.0 * max_distance_, 1e-6});
+  // Cells about a cylinder long: a cylinder's padded box then touches 2-3 per axis.
   if (cylinders == 0) lo = hi = Vec3::Zero();
-  const double max_cells = 4.0 * static_cast<double>(cylinders) + 64.0;
-  for (;;) {
-    double total = 1.0;
-    for (int k = 0; k < 3; ++k) total *= std::floor((hi[k] - lo[k]) / cell_) + 1.0;
-    if (total <= max_cells) break;
-    cell_ *= 2.0;
-  }
+  const GridShape grid = gridShape(lo, hi, std::max(longest, 2.0 * max_distance_), cylinders);
+  cell_ = grid.cell;
+  dims_ = grid.dims;
   origin_ = lo;
-  for (int k = 0; k < 3; ++k) dims_[k] = static_cast<Index>(std::floor((hi[k] - lo[k]) / cell_)) + 1;
   cells_.assign(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]), {});
   for (Index f = 0; f < gridded_; ++f) {
     for (Index c = 0; c < fils[f].numCylinders(); ++c) enlistCylinder(f, c);

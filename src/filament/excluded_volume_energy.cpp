@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "filament/cell_grid.hpp"
+
 namespace cortex {
 namespace {
 
@@ -142,18 +144,9 @@ void CylinderExclusionEnergy::rebuild(const double* x) {
     lo = lo.cwiseMin(midpoint_[i]);
     hi = hi.cwiseMax(midpoint_[i]);
   }
-  double cell = std::max(max_d0 + skin_ + max_length, 1e-6);
-  std::array<Index, 3> dims{};
-  // Cap the cell count near the cylinder count, so that a few far-flung cylinders do not
-  // make the grid huge.
-  const double max_cells = 4.0 * n + 64.0;
-  for (;;) {
-    double total = 1.0;
-    for (int k = 0; k < 3; ++k) total *= std::floor((hi[k] - lo[k]) / cell) + 1.0;
-    if (total <= max_cells) break;
-    cell *= 2.0;
-  }
-  for (int k = 0; k < 3; ++k) dims[k] = static_cast<Index>(std::floor((hi[k] - lo[k]) / cell)) + 1;
+  const GridShape grid = gridShape(lo, hi, max_d0 + skin_ + max_length, n);
+  const double cell = grid.cell;
+  const std::array<Index, 3>& dims = grid.dims;
   const Index num_cells = dims[0] * dims[1] * dims[2];
   auto cellCoord = [&](Index i, int k) {
     return std::min(dims[k] - 1, static_cast<Index>((midpoint_[i][k] - lo[k]) / cell));
