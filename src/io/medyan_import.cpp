@@ -121,8 +121,13 @@ void Translator::minimizer() {
                                                      *cg));
   }
   if (const auto g = value("GRADIENTTOLERANCE")) {
-    toml_ << "force_tolerance = " << num(*g) << "\n";
-    done(whereOf("GRADIENTTOLERANCE"), fmt::format("GRADIENTTOLERANCE -> mechanics.force_tolerance = {} pN", *g));
+    // Kept as given, so the run is MEDYAN's; but near 1 pN a soft network is not relaxed
+    // and what binds depends on the value (docs/medyan.md): say so where users look.
+    toml_ << "force_tolerance = " << num(*g) << "  # pN; results of soft networks depend on it (docs/medyan.md)\n";
+    done(whereOf("GRADIENTTOLERANCE"),
+         fmt::format("GRADIENTTOLERANCE -> mechanics.force_tolerance = {} pN (what a soft network binds depends on "
+                     "it; docs/medyan.md)",
+                     *g));
   }
   if (const auto d = value("MAXDISTANCE")) {
     toml_ << "max_step = " << num(*d) << "\n";
