@@ -114,7 +114,9 @@ MinimizerProgressCallback Simulation::progressOf(std::string what) {
 namespace {
 // Membranes and filaments that push on each other relax in turn, each under the other at
 // rest, until a membrane relaxation finds nothing left to do; past this many rounds the
-// relaxation is reported unconverged.
+// relaxation is reported unconverged. Membranes first: filaments relaxed first against a
+// held membrane escape its push by bending sideways, and a bundle below its buckling load
+// stops raising the membrane (tried; docs/coupling.md).
 constexpr int kMaxCouplingRounds = 50;
 
 }  // namespace
