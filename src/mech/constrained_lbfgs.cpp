@@ -92,15 +92,17 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
     return false;
   };
 
+  // No start from here: u back where it was, the caller approaches the targets in steps.
+  auto infeasibleStart = [&] {
+    u = u_start;
+    r.stop_reason = kInfeasibleStart;
+    return r;
+  };
   ConstraintFrame frame = frameAt(u);
   // A restoration that has to deform the shape more than a refresh allows (e.g. a large
   // jump of the reduced volume) counts as infeasible: the caller approaches the targets
   // in steps instead of crumpling the shape in one projection.
-  if (!restore(u, frame) || moveOf(u - u_start) > s.max_total_move) {
-    u = u_start;
-    r.stop_reason = kInfeasibleStart;
-    return r;
-  }
+  if (!restore(u, frame) || moveOf(u - u_start) > s.max_total_move) return infeasibleStart();
   frame = frameAt(u);
   Eigen::VectorXd g(u.size()), g_new(u.size()), u_new(u.size());
   double value = p.valueAndGradient(u, g);
@@ -108,11 +110,7 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
   // A restoration that carried the shape into a forbidden state (infinite energy: e.g. a
   // membrane onto a filament bead) counts as infeasible too: no line search can start
   // from there, but the caller's smaller steps towards the targets may not go there.
-  if (!std::isfinite(value) && u != u_start) {
-    u = u_start;
-    r.stop_reason = kInfeasibleStart;
-    return r;
-  }
+  if (!std::isfinite(value) && u != u_start) return infeasibleStart();
   Eigen::VectorXd lambda = frame.multipliers(g);
   Eigen::VectorXd res = m ? Eigen::VectorXd(g - frame.jac.transpose() * lambda) : g;
 
