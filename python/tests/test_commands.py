@@ -167,7 +167,7 @@ class CommandsTest(unittest.TestCase):
         with open(self.out("t.csv")) as fh:
             lines = fh.read().splitlines()
         self.assertEqual(lines[0], "run,time_s,body_radius_nm,plus_length_nm,plus_radius_nm,minus_length_nm,"
-                                   "minus_radius_nm")
+                                   "minus_radius_nm,plus_force_pN,minus_force_pN")
         self.assertEqual(len(lines), 1 + 2 * len(cortex.open(t)))
         # The bundle pushes both poles out of the round vesicle, symmetrically.
         first, last = ([float(v) for v in lines[k].split(",")[1:]] for k in (1, len(cortex.open(t))))
@@ -175,6 +175,11 @@ class CommandsTest(unittest.TestCase):
         self.assertGreater(last[2], 10.0)
         self.assertLess(abs(last[2] - last[4]), 0.2 * last[2])
         self.assertIn("(√(κ/2γ) = 22.4 nm)", stdout)
+        self.assertIn("(2π√(2κγ) = 14.05 pN)", stdout)
+        # The membrane pushes back on both poles: equal and opposite forces when the
+        # bundle is still (its beads feel nothing else along the axis but its own springs).
+        self.assertGreater(last[6], 0.5)
+        self.assertLess(abs(last[6] - last[7]), 0.3 * last[6])
 
     def test_lining(self):
         # On a sphere of 200 nm: a filament 10 nm under the membrane along it counts as
@@ -193,12 +198,36 @@ class CommandsTest(unittest.TestCase):
         excess, spread = lining.roughness(membrane)
         self.assertLess(abs(excess), 1e-3)
         self.assertLess(spread, 1e-3)
+        # Ruffles: none on the sphere; on an ellipsoid of axes ±15% (its radius spread 13
+        # nm) the degree-4 fit leaves 0.1 nm; 8 Gaussian bumps 10 nm high and 30 nm wide
+        # (their area-weighted rms 1.54 nm, highest 10.5 nm where two overlap) are what
+        # is left, less the little of them the fit takes up.
+        self.assertLess(lining.ruffles(membrane)[0], 1e-6)
+        ellipsoid = SimpleNamespace(vertices=membrane.vertices * [1.15, 1.0, 0.9], triangles=membrane.triangles)
+        self.assertLess(lining.ruffles(ellipsoid)[0], 0.2)
+        u = membrane.vertices / np.linalg.norm(membrane.vertices, axis=1)[:, None]
+        spots = np.random.default_rng(1).normal(size=(8, 3))
+        spots /= np.linalg.norm(spots, axis=1)[:, None]
+        bumps = sum(10.0 * np.exp(-(np.arccos(np.clip(u @ s, -1, 1)) / 0.15) ** 2) for s in spots)
+        bumpy = SimpleNamespace(vertices=membrane.vertices * (1 + bumps / 200.0)[:, None], triangles=membrane.triangles)
+        rms, highest, count, diameter = lining.ruffles(bumpy, bump=5.0)
+        self.assertGreater(rms, 0.8 * 1.54)
+        self.assertLess(rms, 1.54)
+        self.assertGreater(highest, 0.8 * 10.5)
+        self.assertLess(highest, 10.5)
+        # Over 5 nm: 7 patches (two of the bumps are 15° apart and merge), each about
+        # 2 × 200 nm × 0.15 √(ln 2) = 50 nm across at half height, less the fit's share.
+        self.assertEqual(count, 7)
+        self.assertGreater(diameter, 35.0)
+        self.assertLess(diameter, 55.0)
+        self.assertEqual(lining.ruffles(membrane, bump=5.0)[2], 0)
         t = self.runs["tubes"]
         stdout = self.ok("lining", t, "--within", "60", "--csv", self.out("l.csv"), "-o", self.out("l.png"))
         assert_png(self, self.out("l.png"))
         with open(self.out("l.csv")) as fh:
             lines = fh.read().splitlines()
-        self.assertEqual(lines[0], "run,time_s,near_fraction,near_mean_abs_cos,excess_area,radius_sd_over_mean")
+        self.assertEqual(lines[0], "run,time_s,near_fraction,near_mean_abs_cos,excess_area,radius_sd_over_mean,"
+                                   "ruffle_rms_nm,ruffle_max_nm,bumps,bump_diameter_nm")
         self.assertEqual(len(lines), 1 + len(cortex.open(t)))
         self.assertIn("of the filament length within 60 nm of the membrane", stdout)
 
@@ -217,6 +246,15 @@ class CommandsTest(unittest.TestCase):
         for length, r in (measured[1:3], measured[3:5]):
             self.assertAlmostEqual(length, reach - body, delta=2.0)
             self.assertAlmostEqual(r, radius, delta=0.1)
+        # A longer tube that has drifted 40 nm off the bundle's line is measured about its
+        # own axis: still 25 nm, not the ~47 nm of its distance from that line.
+        membrane = surface_of_revolution(body, radius, 800.0, axis, centre=np.zeros(3), rings=800)
+        off = membrane.vertices @ axis > 250.0
+        membrane.vertices[off] += 40.0 * np.cross(axis, [1.0, 0.0, 0.0]) / np.linalg.norm(np.cross(axis, [1.0, 0, 0]))
+        measured = tubes.shape(membrane, axis)
+        self.assertAlmostEqual(measured[1], 600.0, delta=2.0)
+        self.assertAlmostEqual(measured[2], radius, delta=0.1)
+        self.assertAlmostEqual(measured[4], radius, delta=0.1)
         code, _, stderr = command("tubes", self.runs["vesicle"])
         self.assertEqual(code, 2)
         self.assertIn("has no filaments", stderr)

@@ -58,6 +58,18 @@ class MovieTest(unittest.TestCase):
         self.assertIn("--montage: wrote a montage of 5 of 5 snapshots", stdout)
         assert_png(self, os.path.join(self.tmp.name, "vesicle_montage.png"))
         self.assertFalse(os.path.exists(out))
+        # --columns 5 puts the 5 panels in one row: a picture about five times as wide
+        # as it is tall (the square grid's is 3 × 2 panels).
+        row = os.path.join(self.tmp.name, "row.png")
+        code, _, stderr = command("movie", self.runs["vesicle"], "--montage", "--columns", "5", "-o", row)
+        self.assertEqual(code, 0, stderr)
+        with open(row, "rb") as fh:
+            header = fh.read(24)
+        width, height = int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+        self.assertGreater(width / height, 4.0)
+        code, _, stderr = command("movie", self.runs["vesicle"], "--montage", "--columns", "0", "-o", row)
+        self.assertEqual(code, 2)
+        self.assertIn("--columns 0: must be at least 1", stderr)
 
     def test_cutaway_leaves_out_the_near_half(self):
         # A sphere seen from the default view: the near half is the triangles whose

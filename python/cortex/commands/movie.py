@@ -47,6 +47,9 @@ def add_arguments(p):
     p.add_argument("--cutaway", action="store_true",
                    help="leave out the near half of each membrane (the triangles between its centre and "
                         "the viewer), to see filaments inside a vesicle")
+    p.add_argument("--columns", type=int,
+                   help="panels per row of a montage (default: a square grid); 3 snapshots of a long "
+                        "shape read best in one row")
     p.add_argument("--zoom", type=float, default=1.25,
                    help="3D axes zoom (default 1.25; below 1 when a long shape leaves the frame)")
 
@@ -142,12 +145,14 @@ def encode(ffmpeg, folder, fps, out):
 def montage(scene, out, args):
     n = len(scene.indices)
     keep = [scene.indices[k] for k in sorted(set(np.linspace(0, n - 1, min(n, MONTAGE_PANELS)).round().astype(int)))]
-    ncols = math.ceil(math.sqrt(len(keep)))
+    ncols = min(args.columns or math.ceil(math.sqrt(len(keep))), len(keep))
     nrows = math.ceil(len(keep) / ncols)
     w, h = args.size
-    fig = plotting.pyplot().figure(figsize=(w * ncols * 0.6, h * nrows * 0.6))
+    height = h * nrows * 0.6
+    fig = plotting.pyplot().figure(figsize=(w * ncols * 0.6, height))
     right = scene.add_colour_bar(fig)
-    fig.subplots_adjust(left=0.0, right=right, bottom=0.0, top=0.95, wspace=0.0, hspace=0.15)
+    # Half an inch at the top holds the first row's three-line titles.
+    fig.subplots_adjust(left=0.0, right=right, bottom=0.0, top=1.0 - 0.5 / height, wspace=0.0, hspace=0.15)
     for k, i in enumerate(keep):
         scene.draw(fig.add_subplot(nrows, ncols, k + 1, projection="3d"), i, "\n")
     plotting.save(fig, out, args.dpi)
@@ -157,6 +162,8 @@ def montage(scene, out, args):
 def run(args):
     if args.fps <= 0:
         raise CortexError(f"--fps {args.fps:g}: must be positive")
+    if args.columns is not None and args.columns < 1:
+        raise CortexError(f"--columns {args.columns}: must be at least 1")
     r = common.open_run(args.outdir)
     scene = Scene(r, common.snapshot_indices(r, args.snapshot), args)
     out = args.out or common.default_out(r, "movie.mp4")

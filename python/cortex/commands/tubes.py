@@ -4,8 +4,10 @@ with the vesicle) through the centroid of the enclosed volume: the body's radius
 equator and, at each pole, the protrusion's length beyond the body and its median
 radius over the middle third of that length. A tube is a protrusion much narrower than
 the body; a vesicle merely stretched into a prolate shape has protrusions as wide as
-itself. With a `tension` γ and `bending_modulus` κ in the membrane's config, the radius
-of a tube at that tension, √(κ/2γ), is printed beside.
+itself. The force on each pole: the magnitude of the summed membrane contact forces
+on the beads on that side of the vesicle's centre (nan in runs written without contact
+forces). With a `tension` γ and `bending_modulus` κ in the membrane's config, the
+radius and force of a tube at that tension, √(κ/2γ) and 2π√(2κγ), are printed beside.
 
   tubes OUT                                  table
   tubes OUT -o tubes.png --csv tubes.csv     plot the tube lengths, write the table
@@ -22,7 +24,8 @@ from . import common
 
 HELP = "tubes pulled out of a vesicle's poles by filaments: length and radius over time (table, PNG)"
 
-COLUMNS = ["time_s", "body_radius_nm", "plus_length_nm", "plus_radius_nm", "minus_length_nm", "minus_radius_nm"]
+COLUMNS = ["time_s", "body_radius_nm", "plus_length_nm", "plus_radius_nm", "minus_length_nm", "minus_radius_nm",
+           "plus_force_pN", "minus_force_pN"]
 
 
 def add_arguments(p):
@@ -38,13 +41,22 @@ def bundle_axis(filaments, where):
     return np.linalg.eigh(np.cov((beads - beads.mean(axis=0)).T))[1][:, -1]
 
 
-def pole(along, across, body_radius):
+def pole(vertices, along, across, body_radius):
     """(length beyond the body, median radius over its middle third) of the protrusion at
     the pole where `along` is largest; the radius is nan when fewer than 3 vertices lie
-    in that third."""
+    in that third. The radius is measured about the middle third's own axis (through its
+    vertices' centroid, along their principal axis when that third is longer than twice
+    as wide), so a tube that has bent or drifted off the bundle's line is not measured
+    as wider than it is."""
     length = float(along.max() - body_radius)
     middle = (along > body_radius + length / 3) & (along < body_radius + 2 * length / 3)
-    radius = float(np.median(across[middle])) if length > 0 and middle.sum() >= 3 else math.nan
+    if length <= 0 or middle.sum() < 3:
+        return length, math.nan
+    radius = float(np.median(across[middle]))
+    if length / 3 > 4 * radius:
+        tube = vertices[middle] - vertices[middle].mean(axis=0)
+        axis = np.linalg.eigh(np.cov(tube.T))[1][:, -1]
+        radius = float(np.median(np.linalg.norm(tube - np.outer(tube @ axis, axis), axis=1)))
     return length, radius
 
 
@@ -56,18 +68,35 @@ def shape(membrane, axis):
     # The body's radius: at the vertices nearest the equatorial plane (1%, at least 8).
     equator = np.argsort(np.abs(along))[:max(8, len(along) // 100)]
     body = float(np.median(across[equator]))
-    return [body, *pole(along, across, body), *pole(-along, across, body)]
+    return [body, *pole(membrane.vertices, along, across, body), *pole(membrane.vertices, -along, across, body)]
 
 
-def tube_radius_of_config(run, name):
-    """√(κ/2γ) of membrane `name` from the stored config, or None without a constant
-    tension (none, or a schedule)."""
+def pole_forces(filaments, centre, axis):
+    """[|force on the + pole|, |force on the − pole|], pN: the membrane's contact forces
+    summed over the beads on each side of `centre` along `axis`."""
+    if getattr(filaments, "contact_force", None) is None:
+        return [math.nan, math.nan]
+    plus = (filaments.beads - centre) @ axis > 0
+    force = filaments.contact_force
+    return [float(np.linalg.norm(force[plus].sum(axis=0))), float(np.linalg.norm(force[~plus].sum(axis=0)))]
+
+
+def measure(membrane, filaments, where):
+    """One row after the time: shape() along the bundle's axis, then pole_forces()."""
+    axis = bundle_axis(filaments, where)
+    _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
+    return [*shape(membrane, axis), *pole_forces(filaments, centre, axis)]
+
+
+def tube_of_config(run, name):
+    """(√(κ/2γ) nm, 2π√(2κγ) pN) of membrane `name` from the stored config, or None
+    without a constant tension (none, or a schedule)."""
     if run.config is None:
         return None
     for m in tomllib.loads(run.config).get("membrane", []):
         tension, kappa = m.get("tension", 0.0), m.get("bending_modulus", 100.0)
         if m.get("name") == name and isinstance(tension, float) and tension > 0 and isinstance(kappa, float):
-            return math.sqrt(kappa / (2 * tension))
+            return math.sqrt(kappa / (2 * tension)), 2 * math.pi * math.sqrt(2 * kappa * tension)
     return None
 
 
@@ -78,8 +107,8 @@ def table(outdir, membrane_name):
     for s in run.snapshots():
         m = s.membranes.get(membrane.name)
         if m is not None:
-            rows.append([s.time, *shape(m, bundle_axis(s.filaments, f"{run.trajectory_path}: snapshot {s.name}"))])
-    return np.array(rows, dtype=float), membrane.name, tube_radius_of_config(run, membrane.name)
+            rows.append([s.time, *measure(m, s.filaments, f"{run.trajectory_path}: snapshot {s.name}")])
+    return np.array(rows, dtype=float), membrane.name, tube_of_config(run, membrane.name)
 
 
 def run(args):
@@ -90,11 +119,14 @@ def run(args):
         tables.append(rows)
         common.print_rows(f"{label}: membrane '{name}'",
                           [("t (s)", "8.3f"), ("body r (nm)", "12.1f"), ("+ length", "9.1f"), ("+ radius", "9.1f"),
-                           ("- length", "9.1f"), ("- radius", "9.1f")], rows)
+                           ("- length", "9.1f"), ("- radius", "9.1f"), ("+ force", "8.2f"), ("- force", "8.2f")],
+                          rows)
         last = rows[-1]
-        at = f" (√(κ/2γ) = {expected:.1f} nm)" if expected else ""
+        radius_at = f" (√(κ/2γ) = {expected[0]:.1f} nm)" if expected else ""
+        force_at = f" (2π√(2κγ) = {expected[1]:.2f} pN)" if expected else ""
         print(f"{label}: at t = {last[0]:g} s tubes {last[2]:.0f} and {last[4]:.0f} nm long, radii {last[3]:.1f} "
-              f"and {last[5]:.1f} nm{at}, body radius {last[1]:.0f} nm")
+              f"and {last[5]:.1f} nm{radius_at}, forces on the poles {last[6]:.2f} and {last[7]:.2f} pN{force_at}, "
+              f"body radius {last[1]:.0f} nm")
     if args.csv:
         common.write_tables_csv(args.csv, COLUMNS, labels, tables)
     if args.out:
