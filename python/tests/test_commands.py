@@ -1,6 +1,7 @@
 """Every command of `python3 -m cortex` on real runs; the old tools/ command lines; bad
 input exits with code 2 and one line naming what is wrong."""
 
+import math
 import os
 import tempfile
 import unittest
@@ -230,6 +231,27 @@ class CommandsTest(unittest.TestCase):
                                    "ruffle_rms_nm,ruffle_max_nm,bumps,bump_diameter_nm")
         self.assertEqual(len(lines), 1 + len(cortex.open(t)))
         self.assertIn("of the filament length within 60 nm of the membrane", stdout)
+
+    def test_tube_with_pressure(self):
+        # Without pressure the flat-membrane tube: √(κ/2γ), 2π√(2κγ). With one, the radius
+        # is where the cost per length e(r) = πκ/r + 2πγr − πΔp r² is least (e rises on
+        # both sides) and the force is e there; past Δp = (2γ)^{3/2}/√(27κ) no tube holds.
+        from cortex.commands import tubes
+        r, f = tubes.tube_with_pressure(50.0, 0.005, 0.0)
+        self.assertAlmostEqual(r, math.sqrt(50.0 / 0.01), places=9)
+        self.assertAlmostEqual(f, 2 * math.pi * math.sqrt(0.5), places=9)
+        rng = np.random.default_rng(4)
+        for _ in range(50):
+            kappa, tension = rng.uniform(20.0, 200.0), rng.uniform(1e-3, 0.05)
+            limit = (2 * tension) ** 1.5 / math.sqrt(27 * kappa)
+            pressure = rng.uniform(-1.0, 0.95) * limit
+            r, f = tubes.tube_with_pressure(kappa, tension, pressure)
+            def cost(x):
+                return math.pi * kappa / x + 2 * math.pi * tension * x - math.pi * pressure * x * x
+            self.assertAlmostEqual(f, cost(r), delta=1e-9 * f)
+            self.assertLess(cost(r), cost(r * 1.001))
+            self.assertLess(cost(r), cost(r * 0.999))
+            self.assertIsNone(tubes.tube_with_pressure(kappa, tension, 1.01 * limit))
 
     def test_tubes_measure_a_surface_of_revolution(self):
         # A sphere of radius 200 nm with tubes of radius 25 nm reaching 150 nm beyond it

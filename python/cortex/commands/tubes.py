@@ -7,7 +7,12 @@ the body; a vesicle merely stretched into a prolate shape has protrusions as wid
 itself. The force on each pole: the magnitude of the summed membrane contact forces
 on the beads on that side of the vesicle's centre (nan in runs written without contact
 forces). With a `tension` γ and `bending_modulus` κ in the membrane's config, the
-radius and force of a tube at that tension, √(κ/2γ) and 2π√(2κγ), are printed beside.
+radius and force of a tube at that tension, √(κ/2γ) and 2π√(2κγ), are printed beside;
+those are for a tube drawn from a flat membrane. A tube drawn from a vesicle whose
+volume is held takes its volume from the body against the body's pressure Δp (the
+`pressure` observable), so per length it costs πκ/r + 2πγr − πΔp r²: least at
+κ/r² = 2γ − 2Δp r, and its force is that cost per length there. These are printed too,
+with the last snapshot's Δp.
 
   tubes OUT                                  table
   tubes OUT -o tubes.png --csv tubes.csv     plot the tube lengths, write the table
@@ -89,15 +94,28 @@ def measure(membrane, filaments, where):
 
 
 def tube_of_config(run, name):
-    """(√(κ/2γ) nm, 2π√(2κγ) pN) of membrane `name` from the stored config, or None
+    """(√(κ/2γ) nm, 2π√(2κγ) pN, κ, γ) of membrane `name` from the stored config, or None
     without a constant tension (none, or a schedule)."""
     if run.config is None:
         return None
     for m in tomllib.loads(run.config).get("membrane", []):
         tension, kappa = m.get("tension", 0.0), m.get("bending_modulus", 100.0)
         if m.get("name") == name and isinstance(tension, float) and tension > 0 and isinstance(kappa, float):
-            return math.sqrt(kappa / (2 * tension)), 2 * math.pi * math.sqrt(2 * kappa * tension)
+            return math.sqrt(kappa / (2 * tension)), 2 * math.pi * math.sqrt(2 * kappa * tension), kappa, tension
     return None
+
+
+def tube_with_pressure(kappa, tension, pressure):
+    """(radius nm, force pN) of a long tube at bending modulus κ, tension γ and body
+    pressure Δp: the least of e(r) = πκ/r + 2πγr − πΔp r², the smallest positive root of
+    2Δp r³ − 2γ r² + κ = 0, and e there. None when e has no minimum (Δp too high for
+    the tension to hold a tube: Δp ≥ (2γ)^{3/2} / √(27κ))."""
+    roots = np.roots([2 * pressure, -2 * tension, 0.0, kappa])  # a quadratic when Δp = 0
+    radii = sorted(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r) and r.real > 0)
+    if not radii:
+        return None
+    r = radii[0]
+    return r, math.pi * kappa / r + 2 * math.pi * tension * r - math.pi * pressure * r * r
 
 
 def table(outdir, membrane_name):
@@ -108,7 +126,13 @@ def table(outdir, membrane_name):
         m = s.membranes.get(membrane.name)
         if m is not None:
             rows.append([s.time, *measure(m, s.filaments, f"{run.trajectory_path}: snapshot {s.name}")])
-    return np.array(rows, dtype=float), membrane.name, tube_of_config(run, membrane.name)
+    expected = tube_of_config(run, membrane.name)
+    if expected is not None:
+        column = f"membranes.{membrane.name}.pressure"
+        pressure = run.observables[column][-1] if column in run.observables else math.nan
+        tube = tube_with_pressure(*expected[2:], pressure) if math.isfinite(pressure) else None
+        expected = (*expected[:2], pressure, *(tube or (math.nan, math.nan)))
+    return np.array(rows, dtype=float), membrane.name, expected
 
 
 def run(args):
@@ -127,6 +151,9 @@ def run(args):
         print(f"{label}: at t = {last[0]:g} s tubes {last[2]:.0f} and {last[4]:.0f} nm long, radii {last[3]:.1f} "
               f"and {last[5]:.1f} nm{radius_at}, forces on the poles {last[6]:.2f} and {last[7]:.2f} pN{force_at}, "
               f"body radius {last[1]:.0f} nm")
+        if expected and math.isfinite(expected[3]):
+            print(f"{label}: with the body's pressure Δp = {expected[2]:.3g} pN/nm² at t = {last[0]:g} s a tube "
+                  f"drawn from it has radius {expected[3]:.1f} nm and force {expected[4]:.2f} pN")
     if args.csv:
         common.write_tables_csv(args.csv, COLUMNS, labels, tables)
     if args.out:
