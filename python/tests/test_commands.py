@@ -204,13 +204,14 @@ class CommandsTest(unittest.TestCase):
         # (their area-weighted rms 1.54 nm, highest 10.5 nm where two overlap) are what
         # is left, less the little of them the fit takes up.
         self.assertLess(lining.ruffles(membrane)[0], 1e-6)
-        ellipsoid = SimpleNamespace(vertices=membrane.vertices * [1.15, 1.0, 0.9], triangles=membrane.triangles)
+        ellipsoid = cortex.snapshot.Membrane("v", membrane.vertices * [1.15, 1.0, 0.9], membrane.triangles, None)
         self.assertLess(lining.ruffles(ellipsoid)[0], 0.2)
         u = membrane.vertices / np.linalg.norm(membrane.vertices, axis=1)[:, None]
         spots = np.random.default_rng(1).normal(size=(8, 3))
         spots /= np.linalg.norm(spots, axis=1)[:, None]
         bumps = sum(10.0 * np.exp(-(np.arccos(np.clip(u @ s, -1, 1)) / 0.15) ** 2) for s in spots)
-        bumpy = SimpleNamespace(vertices=membrane.vertices * (1 + bumps / 200.0)[:, None], triangles=membrane.triangles)
+        raised = membrane.vertices * (1 + bumps / 200.0)[:, None]
+        bumpy = cortex.snapshot.Membrane("v", raised, membrane.triangles, None)
         rms, highest, count, diameter = lining.ruffles(bumpy, bump=5.0)
         self.assertGreater(rms, 0.8 * 1.54)
         self.assertLess(rms, 1.54)

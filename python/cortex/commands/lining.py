@@ -87,16 +87,6 @@ def roughness(membrane):
     return float(area / (4 * np.pi * radius**2) - 1), float(r.std() / r.mean())
 
 
-def vertex_areas(vertices, triangles):
-    """Each vertex's third of the area of its triangles."""
-    a, b, c = (vertices[triangles[:, k]] for k in range(3))
-    third = np.linalg.norm(np.cross(b - a, c - a), axis=1) / 6.0
-    areas = np.zeros(len(vertices))
-    for k in range(3):
-        np.add.at(areas, triangles[:, k], third)
-    return areas
-
-
 def direction_polynomials(u, degree):
     """Every monomial x^i y^j z^k with i + j + k ≤ degree of the unit vectors u, as columns:
     on the sphere they span the spherical harmonics of degree ≤ `degree`."""
@@ -131,7 +121,7 @@ def ruffles(membrane, bump=10.0, degree=RUFFLE_DEGREE):
     offset = membrane.vertices - centre
     r = np.linalg.norm(offset, axis=1)
     basis = direction_polynomials(offset / r[:, None], degree)
-    w = np.sqrt(vertex_areas(membrane.vertices, membrane.triangles))
+    w = np.sqrt(membrane.cell_areas())
     coefficients = np.linalg.lstsq(basis * w[:, None], r * w, rcond=None)[0]
     residual = r - basis @ coefficients
     label = patches(residual > bump, membrane.triangles)

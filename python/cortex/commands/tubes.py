@@ -65,9 +65,11 @@ def pole(vertices, along, across, body_radius):
     return length, radius
 
 
-def shape(membrane, axis):
-    """[body radius, + pole length, + pole radius, − pole length, − pole radius], nm."""
-    _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
+def shape(membrane, axis, centre=None):
+    """[body radius, + pole length, + pole radius, − pole length, − pole radius], nm, about
+    `centre` (default: the centroid of the enclosed volume)."""
+    if centre is None:
+        _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
     along = (membrane.vertices - centre) @ axis
     across = np.linalg.norm(membrane.vertices - centre - np.outer(along, axis), axis=1)
     # The body's radius: at the vertices nearest the equatorial plane (1%, at least 8).
@@ -90,7 +92,7 @@ def measure(membrane, filaments, where):
     """One row after the time: shape() along the bundle's axis, then pole_forces()."""
     axis = bundle_axis(filaments, where)
     _, centre = geometry.volume_centroid(membrane.vertices, membrane.triangles)
-    return [*shape(membrane, axis), *pole_forces(filaments, centre, axis)]
+    return [*shape(membrane, axis, centre), *pole_forces(filaments, centre, axis)]
 
 
 def tube_of_config(run, name):
