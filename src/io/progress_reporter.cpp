@@ -18,16 +18,19 @@ std::string duration(double seconds) {
   return fmt::format("{:.1f} h", seconds / 3600);
 }
 
-// "mechanics 64% (12,345 force evaluations, 210/s)": the share of wall time and throughput.
-std::string throughput(const System& system, double wall) {
+// "mechanics 64% (12,345 force evaluations, 210/s)": the share of this session's wall time
+// (the counters' seconds less those at its start) and the throughput since t = 0.
+std::string throughput(const System& system, const RunCounters& at_start, double wall) {
   const RunCounters& c = system.counters;
+  const double mechanics_share = (c.mechanics_seconds - at_start.mechanics_seconds) / wall;
+  const double chemistry_share = (c.chemistry_seconds - at_start.chemistry_seconds) / wall;
   std::string text;
   const std::int64_t evaluations = system.forceField().forceEvaluations();
   if (system.hasMechanics() && evaluations > 0)
-    text += fmt::format(" | mechanics {:.0f}% ({} force evaluations, {:.3g}/s)", 100 * c.mechanics_seconds / wall,
+    text += fmt::format(" | mechanics {:.0f}% ({} force evaluations, {:.3g}/s)", 100 * mechanics_share,
                         evaluations, c.mechanics_seconds > 0 ? evaluations / c.mechanics_seconds : 0.0);
   if (const ChemistryEngine* chem = system.chemistry())
-    text += fmt::format(" | chemistry {:.0f}% ({} events, {:.3g} events/s)", 100 * c.chemistry_seconds / wall,
+    text += fmt::format(" | chemistry {:.0f}% ({} events, {:.3g} events/s)", 100 * chemistry_share,
                         chem->events(), c.chemistry_seconds > 0 ? chem->events() / c.chemistry_seconds : 0.0);
   return text;
 }
@@ -47,8 +50,12 @@ double RecentPace::secondsFor(double remaining) const {
   return sim > 0 ? remaining * wall / sim : -1.0;
 }
 
-ProgressReporter::ProgressReporter(double end_time, bool live, double interval)
-    : end_time_(end_time), live_(live), interval_(interval), start_(std::chrono::steady_clock::now()) {}
+ProgressReporter::ProgressReporter(double end_time, bool live, double interval, const RunCounters& at_start)
+    : end_time_(end_time),
+      live_(live),
+      interval_(interval),
+      start_(std::chrono::steady_clock::now()),
+      at_start_(at_start) {}
 
 double ProgressReporter::wallSeconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -88,7 +95,7 @@ void ProgressReporter::window(const System& system, const MinimizationResult& re
   std::string line = fmt::format("t = {:.4g} / {:.4g} s ({:.0f}%) | wall {}, {} left", system.time(), end_time_,
                                  end_time_ > 0 ? 100 * system.time() / end_time_ : 100.0, duration(wall),
                                  duration(done ? 0.0 : pace_.secondsFor(end_time_ - system.time())));
-  line += throughput(system, wall);
+  line += throughput(system, at_start_, wall);
   if (system.hasMechanics())
     line += fmt::format(" | last relaxation {} iterations, max force {:.3g} pN", result.iterations, result.max_force);
   show(line, due(wall, done, false), wall);

@@ -33,8 +33,10 @@ class RecentPace {
 class ProgressReporter {
  public:
   // `live`: stderr is a terminal (and not --quiet); `interval`: seconds between plain
-  // lines off a terminal, 0 for none.
-  ProgressReporter(double end_time, bool live, double interval);
+  // lines off a terminal, 0 for none; `at_start`: the counters when this session began
+  // (a resumed run's carry the time spent before it), so that the shares of wall time are
+  // this session's.
+  ProgressReporter(double end_time, bool live, double interval, const RunCounters& at_start = {});
 
   void window(const System& system, const MinimizationResult& result);
   void relaxing(const System& system, const std::string& what, const MinimizerProgress& p);
@@ -60,6 +62,7 @@ class ProgressReporter {
   double last_window_ = 0.0;  // wall seconds when the latest window ended
   bool line_open_ = false;
   RecentPace pace_;
+  RunCounters at_start_;
 };
 
 }  // namespace cortex

@@ -211,7 +211,8 @@ RunOutcome runSimulation(const RunRequest& request) {
 
   TrajectoryWriter writer(outdir, resume ? header.next_snapshot : 0, resume, header.run_id, config.effective_toml);
   const bool live = !request.quiet && isatty(STDERR_FILENO);
-  ProgressReporter progress(config.simulation.end_time, live, request.quiet ? 0.0 : request.progress_interval);
+  ProgressReporter progress(config.simulation.end_time, live, request.quiet ? 0.0 : request.progress_interval,
+                            system->counters);
   const StopSignals stop;
   OutputObserver observer(outdir, header, writer, progress, &stop,
                           {config.simulation.seed, request.threads, 0.0});

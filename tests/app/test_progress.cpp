@@ -64,5 +64,27 @@ TEST(Progress, NoneWithProgressZeroOrQuiet) {
   EXPECT_EQ(bad.exit_code, 2) << describe(bad);
 }
 
+// The shares of wall time are this session's: a resumed run's counters carry the seconds
+// spent before it, which once gave "mechanics 12259%" against the new session's wall time.
+TEST(Progress, SharesOfAResumedRunAreThisSessions) {
+  const TempDir dir;
+  const fs::path config = writeConfig(dir.path(), kConfig);
+  const fs::path out = dir / "out";
+  ASSERT_EQ(runCortex({"run", config.string(), "-o", out.string(), "-q"}, dir.path()).exit_code, 0);
+  const RunResult r = runCortex(
+      {"run", "--resume", out.string(), "--set", "simulation.end_time=0.4", "--progress", "0.000001"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  int windows = 0;
+  for (const std::string& line : lines(r.err, "cortex: t = ")) {
+    const std::size_t at = line.find("mechanics ");
+    if (at == std::string::npos) continue;  // a relaxation's line
+    ++windows;
+    const double percent = std::stod(line.substr(at + 10));
+    EXPECT_GE(percent, 0.0) << line;
+    EXPECT_LE(percent, 100.0) << line;
+  }
+  EXPECT_GE(windows, 10) << r.err;
+}
+
 }  // namespace
 }  // namespace cortex::cli_test
