@@ -127,7 +127,9 @@ void checkResumable(const Config& stored, const Config& now, double checkpoint_t
   }
 }
 
-void logThroughput(const System& system, double wall) {
+// The work since t = 0 and where its time went; `wall` is this session's, which after a
+// resume is less than those times, so the line says so.
+void logThroughput(const System& system, double wall, bool resumed) {
   const RunCounters& c = system.counters;
   const std::int64_t evals = system.forceField().forceEvaluations();
   const double per_s = c.mechanics_seconds > 0 ? evals / c.mechanics_seconds : 0.0;
@@ -137,10 +139,11 @@ void logThroughput(const System& system, double wall) {
       preconditioner = fmt::format(", Sobolev preconditioner {:.2f} s ({} factorizations)", c.preconditioner_seconds,
                                    c.preconditioner_factorizations);
     spdlog::info("mechanics: {} minimizations, {} iterations, {} force evaluations in {:.2f} s ({:.0f} per s); "
-                 "of which forces {:.2f} s ({:.3g} vertex-gradient evaluations/s){}; remeshing {:.2f} s; wall {:.2f} s",
+                 "of which forces {:.2f} s ({:.3g} vertex-gradient evaluations/s){}; remeshing {:.2f} s; wall {:.2f} s{}",
                  c.minimizations, c.minimizer_iterations, evals, c.mechanics_seconds, per_s, c.force_seconds,
                  c.force_seconds > 0 ? evals * static_cast<double>(system.numVertices()) / c.force_seconds : 0.0,
-                 preconditioner, c.remesh_seconds, wall);
+                 preconditioner, c.remesh_seconds, wall,
+                 resumed ? " this session (the counts and times before it are since t = 0)" : "");
   }
   if (const FilamentNetwork* net = system.filaments())
     spdlog::info("filaments: {} beads; {} minimizations, {} force evaluations in {:.2f} s ({:.0f} force "
@@ -244,7 +247,7 @@ RunOutcome runSimulation(const RunRequest& request) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeJsonAtomically(outdir / "summary.json",
                       summarize(*system, {config.simulation.seed, request.threads, wall}));
-  logThroughput(*system, wall);
+  logThroughput(*system, wall, resume);
   spdlog::info("finished at t = {:.6g} s in {:.2f} s wall; output in {}", system->time(), wall, outdir.string());
   // The one line a batch job's output always ends with: where the results are.
   fmt::print("cortex: finished t = {:.6g} s in {:.1f} s wall; results in {} (summary.json, observables.csv, "
