@@ -36,7 +36,7 @@ class ProgressReporter {
   // lines off a terminal, 0 for none; `at_start`: the counters when this session began
   // (a resumed run's carry the time spent before it), so that the shares of wall time are
   // this session's.
-  ProgressReporter(double end_time, bool live, double interval, const RunCounters& at_start = {});
+  ProgressReporter(double end_time, bool live, double interval, const RunCounters& at_start);
 
   void window(const System& system, const MinimizationResult& result);
   void relaxing(const System& system, const std::string& what, const MinimizerProgress& p);

@@ -3,8 +3,6 @@
 // none with --progress 0 or --quiet.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "app/cli_helpers.hpp"
@@ -87,8 +85,7 @@ TEST(Progress, SharesOfAResumedRunAreThisSessions) {
   }
   EXPECT_GE(windows, 10) << r.err;
   // The log's closing line of work done says its wall time is the session's.
-  std::ifstream log(out / "cortex.log");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  const std::string text = readFile(out / "cortex.log");
   const std::size_t last = text.rfind("mechanics: ");
   ASSERT_NE(last, std::string::npos) << text;
   EXPECT_NE(text.find("this session", last), std::string::npos) << text.substr(last);
