@@ -20,6 +20,8 @@
 
 #include "core/constants.hpp"
 #include "membrane/shape_relaxation.hpp"
+#include "membrane/sobolev_preconditioner.hpp"
+#include "mesh/icosphere.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -67,6 +69,34 @@ void relax(benchmark::State& state, const Vec3& radii, double reduced_volume) {
 // Radii of area 4π (1000 nm)² with the stated own reduced volume (quadrature).
 void BM_RelaxProlate(benchmark::State& state) { relax(state, Vec3(812.26, 812.26, 1409.58), 0.9); }   // own v 0.93
 void BM_RelaxOblate(benchmark::State& state) { relax(state, Vec3(1278.95, 1278.95, 446.29), 0.7); }  // own v 0.73
+
+// The preconditioner alone on a sphere of radius 800 nm (icosphere, 2.6k and 10k
+// vertices; ~3.6k is the MEDYAN vesicle's mesh): one factorization, and one application
+// P^-1 r (two sparse Cholesky solves), which every L-BFGS iteration makes.
+ScalarMeshOperators sphereOperators(int subdivisions) {
+  const TriangleSoup soup = icosphere(Vec3::Zero(), 800.0, subdivisions);
+  std::vector<double> x;
+  for (const Vec3& v : soup.positions) x.insert(x.end(), {v.x(), v.y(), v.z()});
+  return scalarMeshOperators(x.data(), static_cast<Index>(soup.positions.size()), soup.triangles);
+}
+constexpr double kKappa = 100.0, kEps = 20.0 / (800.0 * 800.0);  // as the shape relaxation sets them
+
+void BM_SobolevFactorize(benchmark::State& state) {
+  const ScalarMeshOperators ops = sphereOperators(static_cast<int>(state.range(0)));
+  SobolevPreconditioner p;
+  for (auto _ : state) p.build(ops, kKappa, kEps, {});
+  state.counters["vertices"] = static_cast<double>(ops.mass.size());
+}
+void BM_SobolevApply(benchmark::State& state) {
+  const ScalarMeshOperators ops = sphereOperators(static_cast<int>(state.range(0)));
+  SobolevPreconditioner p;
+  p.build(ops, kKappa, kEps, {});
+  Eigen::VectorXd r = ops.mass;
+  for (auto _ : state) benchmark::DoNotOptimize(r = p.apply(r) * 1e4);
+  state.counters["vertices"] = static_cast<double>(ops.mass.size());
+}
+BENCHMARK(BM_SobolevFactorize)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SobolevApply)->Arg(4)->Arg(5)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK(BM_RelaxProlate)->Arg(80)->Arg(40)->Arg(20)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_RelaxOblate)->Arg(80)->Arg(40)->Arg(20)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace cortex {
@@ -62,12 +63,14 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
     f.s_inv = (jac * f.w).inverse();
     return f;
   };
-  // The frame at a restored point: its Jacobian (left in `jac` by the restoration) with W
-  // kept from an earlier frame. The projector stays exact (J Pi = 0) and r stays
-  // W-orthogonal, so directions still descend; W is refreshed every few iterations.
-  auto frameWith = [&](const ConstraintFrame& old) {
+  // The frame at a restored point: its Jacobian with W kept from an earlier frame. The
+  // projector stays exact (J Pi = 0) and r stays W-orthogonal, so directions still
+  // descend; W is refreshed every few iterations.
+  auto frameWith = [&](const Eigen::VectorXd& at, const ConstraintFrame& old) {
     ConstraintFrame f;
     if (m == 0) return f;
+    p.constraints(at, c, jac);
+    ++r.constraint_evaluations;
     f.jac = jac;
     f.w = old.w;
     f.s_inv = (jac * f.w).inverse();
@@ -79,15 +82,29 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
       if (std::abs(cv[i]) > s.constraint_tolerance * scale[i]) return false;
     return true;
   };
-  // Newton restoration along the frame's W (Jacobian re-evaluated, W frozen).
+  auto violation = [&](const Eigen::VectorXd& cv) { return cv.cwiseQuotient(scale).cwiseAbs().maxCoeff(); };
+  // Restoration along the frame's W, v -= W (J W)^-1 c. The values of c are cheap, its
+  // Jacobian is not (a pass over the mesh), so J W is the frame's (chord steps) until a
+  // step reduces the violation less than 4-fold; then J is evaluated at v (a Newton step)
+  // and its J W used from there on. Both converge to the same point of the manifold
+  // along W. The Jacobian at the restored point, which the next frame needs, is left to
+  // frameWith (after the line search accepted the point).
   auto restore = [&](Eigen::VectorXd& v, const ConstraintFrame& f) {
     if (m == 0) return true;
+    Eigen::MatrixXd s_inv = f.s_inv;
+    double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < 30; ++it) {
-      p.constraints(v, c, jac);
+      p.constraintValues(v, c);
       ++r.constraint_evaluations;
       if (satisfied(c)) return true;
-      const Eigen::MatrixXd sj = jac * f.w;
-      v -= f.w * sj.partialPivLu().solve(c);
+      const double now = violation(c);
+      if (!(now <= 0.25 * previous)) {
+        p.constraints(v, c, jac);
+        ++r.constraint_evaluations;
+        s_inv = (jac * f.w).inverse();
+      }
+      previous = now;
+      v -= f.w * (s_inv * c);
     }
     return false;
   };
@@ -98,15 +115,52 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
     r.stop_reason = kInfeasibleStart;
     return r;
   };
-  ConstraintFrame frame = frameAt(u);
-  // A restoration that has to deform the shape more than a refresh allows (e.g. a large
-  // jump of the reduced volume) counts as infeasible: the caller approaches the targets
-  // in steps instead of crumpling the shape in one projection.
-  if (!restore(u, frame) || moveOf(u - u_start) > s.max_total_move) return infeasibleStart();
-  frame = frameAt(u);
   Eigen::VectorXd g(u.size()), g_new(u.size()), u_new(u.size());
-  double value = p.valueAndGradient(u, g);
-  ++r.evaluations;
+  double value = 0.0;
+  bool evaluated = false;
+  bool on_manifold = true;
+  if (m > 0) {
+    p.constraintValues(u, c);
+    ++r.constraint_evaluations;
+    on_manifold = satisfied(c);
+  }
+  if (on_manifold) {
+    // A start already at rest (the step confirming a converged shape on fresh normals, a
+    // membrane nothing moved) is recognized with least-squares multipliers, which need no
+    // preconditioner solve; the frame below costs one per constraint.
+    value = p.valueAndGradient(u, g);
+    ++r.evaluations;
+    evaluated = true;
+    if (std::isfinite(value)) {
+      Eigen::VectorXd lambda_ls;
+      if (m > 0) {
+        p.constraints(u, c, jac);
+        ++r.constraint_evaluations;
+        lambda_ls = jac.transpose().colPivHouseholderQr().solve(g);
+      }
+      const double residual = m > 0 ? maxAbs(g - jac.transpose() * lambda_ls) : maxAbs(g);
+      if (residual <= s.tolerance) {
+        r.converged = true;
+        r.value = value;
+        r.max_residual = residual;
+        r.multipliers = lambda_ls;
+        if (m > 0) r.constraint_values = c;
+        return r;
+      }
+    }
+  }
+  ConstraintFrame frame = frameAt(u);
+  if (!on_manifold) {
+    // A restoration that has to deform the shape more than a refresh allows (e.g. a large
+    // jump of the reduced volume) counts as infeasible: the caller approaches the targets
+    // in steps instead of crumpling the shape in one projection.
+    if (!restore(u, frame) || moveOf(u - u_start) > s.max_total_move) return infeasibleStart();
+    frame = frameAt(u);
+  }
+  if (!evaluated) {
+    value = p.valueAndGradient(u, g);
+    ++r.evaluations;
+  }
   // A restoration that carried the shape into a forbidden state (infinite energy: e.g. a
   // membrane onto a filament bead) counts as infeasible too: no line search can start
   // from there, but the caller's smaller steps towards the targets may not go there.
@@ -188,7 +242,7 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
     ++frame_age;
     const bool refresh_w = frame_age >= s.frame_refresh;
     if (refresh_w) frame_age = 0;
-    const ConstraintFrame frame_new = refresh_w ? frameAt(u_new) : frameWith(frame);
+    const ConstraintFrame frame_new = refresh_w ? frameAt(u_new) : frameWith(u_new, frame);
     const Eigen::VectorXd lambda_new = frame_new.multipliers(g_new);
     Eigen::VectorXd res_new = m ? Eigen::VectorXd(g_new - frame_new.jac.transpose() * lambda_new) : g_new;
     LbfgsMemory::Pair pair{u_new - u, res_new - res, 0.0};

@@ -8,9 +8,10 @@
 //    P-orthogonal projector  Pi z = z - W S^-1 J z,  W = P^-1 J^T, S = J W;
 //  - Lagrange multipliers lambda = S^-1 W^T g at every iterate; r = g - J^T lambda is
 //    the residual (force) that must fall below the tolerance;
-//  - after every trial step a restoration back onto c = 0 along W (a Newton iteration
-//    on the constraints with the Jacobian frozen at the iterate, which costs no energy
-//    evaluation and converges to round-off in 2-4 cheap steps);
+//  - after every trial step a restoration back onto c = 0 along W: chord steps with the
+//    frame's J W (constraint values only), a Newton step with the Jacobian at the point
+//    whenever a chord step reduces the violation less than 4-fold. No energy evaluation;
+//    it converges to round-off in 2-4 cheap steps;
 //  - a backtracking (Armijo) line search on the restored points that also refuses
 //    geometrically inadmissible trial points (folded triangles).
 // With no constraints it is plain preconditioned L-BFGS.
@@ -33,6 +34,11 @@ class ConstrainedProblem {
   virtual double valueAndGradient(const Eigen::VectorXd& u, Eigen::VectorXd& g) = 0;
   // Constraint values (zero when satisfied) and Jacobian (rows = constraints); cheap.
   virtual void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& c, Eigen::MatrixXd& jacobian) = 0;
+  // The values alone: most restoration steps need no Jacobian. Override when cheaper.
+  virtual void constraintValues(const Eigen::VectorXd& u, Eigen::VectorXd& c) {
+    Eigen::MatrixXd unused;
+    constraints(u, c, unused);
+  }
   // |c_i| <= constraint_tolerance * scale_i counts as satisfied.
   virtual Eigen::VectorXd constraintScale() const = 0;
   // The last numLinearConstraints() rows are linear with a constant Jacobian (e.g. rigid

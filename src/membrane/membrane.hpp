@@ -146,6 +146,10 @@ class Membrane final : public Body {
 
   // Geometry at the coordinates of `e`, recomputed only when e.version changes.
   const MeshGeometry& geometry(const Evaluation& e);
+  // The geometry an evaluation of `version` computed, if it is still the cached one.
+  const MeshGeometry* cachedGeometry(std::uint64_t version) const {
+    return cache_valid_ && cache_version_ == version ? &cache_ : nullptr;
+  }
   // Geometry at the mesh's own positions.
   MeshGeometry currentGeometry() const;
 

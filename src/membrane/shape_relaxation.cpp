@@ -124,6 +124,8 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
     positionsAt(u);
     grad3_.setZero();
     const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_};
+    evaluated_u_ = u;
+    evaluated_version_ = e.version;
     double total = 0.0;
     for (EnergyTerm* t : terms_) total += t->evaluate(e);
     return total;
@@ -140,9 +142,15 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
     return total;
   }
   void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& c, Eigen::MatrixXd& jac) override {
+    const MeshGeometry* geometry = nullptr;
     if (exact_area_ || exact_volume_) {
-      positionsAt(u);
-      geometry_.compute(m_.topology(), x_.data());
+      // At the point of the last energy evaluation (an accepted step) its terms computed
+      // the geometry already.
+      if (u.size() == evaluated_u_.size() && u == evaluated_u_) geometry = m_.cachedGeometry(evaluated_version_);
+      if (!geometry) {
+        geometry_.compute(m_.topology(), positionsAt(u).data());
+        geometry = &geometry_;
+      }
     }
     c.resize(numConstraints());
     jac.resize(numConstraints(), size());
@@ -152,12 +160,22 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
       for (Index v = 0; v < size(); ++v) jac(row, v) = fixed_[v] ? 0.0 : normals_[v].dot(gradient[v]);
       ++row;
     };
-    if (exact_area_) constraintRow(geometry_.area - area_target, geometry_.area_gradient);
-    if (exact_volume_) constraintRow(geometry_.volume - volume_target, geometry_.volume_gradient);
+    if (exact_area_) constraintRow(geometry->area - area_target, geometry->area_gradient);
+    if (exact_volume_) constraintRow(geometry->volume - volume_target, geometry->volume_gradient);
     if (rigid_.rows() > 0) {
       c.tail(rigid_.rows()) = rigid_ * u;
       jac.bottomRows(rigid_.rows()) = rigid_;
     }
+  }
+  void constraintValues(const Eigen::VectorXd& u, Eigen::VectorXd& c) override {
+    c.resize(numConstraints());
+    int row = 0;
+    if (exact_area_ || exact_volume_) {
+      const AreaAndVolume av = areaAndVolume(m_.topology(), positionsAt(u).data());
+      if (exact_area_) c[row++] = av.area - area_target;
+      if (exact_volume_) c[row++] = av.volume - volume_target;
+    }
+    if (rigid_.rows() > 0) c.tail(rigid_.rows()) = rigid_ * u;
   }
   int numLinearConstraints() const override { return static_cast<int>(rigid_.rows()); }
   Eigen::VectorXd constraintScale() const override {
@@ -226,6 +244,8 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   bool exact_area_, exact_volume_;
   const SobolevPreconditioner& p_;
   Eigen::VectorXd x0_, x_, grad3_;
+  Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
+  std::uint64_t evaluated_version_ = 0;
   std::vector<Vec3> normals_, face_normal0_;
   std::vector<char> fixed_;
   MeshGeometry geometry_;
@@ -278,10 +298,11 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   bool final_remesh_done = false;
   long iterations_left = s.max_iterations;
   ConstrainedLbfgsResult last;
+  ShapeRelaxationWarmStart own_start;
+  ShapeRelaxationWarmStart& warm = s.warm_start ? *s.warm_start : own_start;
   LbfgsMemory memory;
-  SobolevPreconditioner precond;
-  Index factored_vertices = -1;
-  int outer_since_factoring = 0;
+  SobolevPreconditioner& precond = warm.preconditioner;
+  const long solves_before = precond.solves();
 
   double continuation = 1.0;  // fraction of the way from the current area and volume to the targets
   for (rep.outer = 0; rep.outer < kMaxOuter; ++rep.outer) {
@@ -290,13 +311,16 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     MeshGeometry geo0;
     geo0.compute(m.topology(), x0.data());
     const double radius = std::sqrt(geo0.area / (4.0 * constants::kPi));
-    if (n != factored_vertices || outer_since_factoring >= kRefactorInterval) {
+    if (!warm.factored || warm.connectivity != m.connectivityVersion() || warm.vertices != n ||
+        warm.outer_since_factoring >= kRefactorInterval) {
       const Timer timer{rep.factor_seconds};
       precond.build(scalarMeshOperators(x0.data(), n, m.topology().triangles), scales.kappa, kShift / (radius * radius),
                     m.fixedVertices());
       ++rep.factorizations;
-      factored_vertices = n;
-      outer_since_factoring = 0;
+      warm.factored = true;
+      warm.connectivity = m.connectivityVersion();
+      warm.vertices = n;
+      warm.outer_since_factoring = 0;
     }
     NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond);
     if (scales.area_stiffness > 0 || (closed && scales.volume_stiffness > 0)) {
@@ -320,7 +344,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     inner.max_move = kStepStrain;
     inner.max_total_move = kRefreshStrain;
     inner.constraint_tolerance = kConstraintTolerance;
-    ++outer_since_factoring;
+    ++warm.outer_since_factoring;
     Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
     // Continuation: targets the restoration cannot reach from here (a sphere asked for a
     // lower reduced volume: the area and volume gradients are parallel), or only by a
@@ -462,7 +486,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   }
   m.setEquilibrium(equilibrium);
   field.countForceEvaluations(rep.force_evaluations, rep.force_seconds);
-  rep.preconditioner_solves = precond.solves();
+  rep.preconditioner_solves = precond.solves() - solves_before;
   rep.seconds = since(start);
   return rep;
 }

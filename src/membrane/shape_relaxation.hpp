@@ -25,18 +25,39 @@
 // in steps (continuation).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "mech/force_field.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
+#include "membrane/sobolev_preconditioner.hpp"
 
 namespace cortex {
+
+// What a relaxation of a membrane leaves to the next one of the same membrane: its
+// preconditioner, factorized and, while the mesh keeps its connectivity, with its
+// fill-reducing ordering. Membranes pushed by filaments are relaxed several times per
+// window (Simulation::relaxByBody), each time a little away from the last, and the last
+// factorization still fits them. (Keeping the L-BFGS pairs as well was tried: no fewer
+// iterations.) newWindow() keeps only the ordering, a function of the connectivity
+// alone, so what a window computes does not depend on earlier windows and a resumed run
+// relaxes exactly as an uninterrupted one.
+struct ShapeRelaxationWarmStart {
+  SobolevPreconditioner preconditioner;
+  bool factored = false;
+  std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() it was factored for
+  Index vertices = 0;
+  int outer_since_factoring = 0;
+
+  void newWindow() { factored = false; }
+};
 
 struct ShapeRelaxationSettings {
   double force_tolerance = 0.0;  // pN, largest normal residual force on a vertex; 0: naturalForceTolerance
   long max_iterations = 20000;   // L-BFGS iterations over all outer steps
   MinimizerProgressCallback progress;  // optional, after every outer step
+  ShapeRelaxationWarmStart* warm_start = nullptr;  // optional: kept by the caller between relaxations
 };
 
 // The membrane's own force scale at time t, the tolerance when none is given: the force

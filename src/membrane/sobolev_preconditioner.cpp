@@ -50,7 +50,19 @@ void SobolevPreconditioner::build(const ScalarMeshOperators& ops, double kappa, 
       if (fixed[i]) mass_[i] = 1.0;
   }
   k.prune(0.0);
-  llt_.compute(k);
+  k.makeCompressed();
+  // The fill-reducing ordering depends on the pattern alone: kept while it does not change.
+  const bool same_pattern =
+      pattern_outer_.size() == static_cast<std::size_t>(k.outerSize() + 1) &&
+      pattern_inner_.size() == static_cast<std::size_t>(k.nonZeros()) &&
+      std::equal(pattern_outer_.begin(), pattern_outer_.end(), k.outerIndexPtr()) &&
+      std::equal(pattern_inner_.begin(), pattern_inner_.end(), k.innerIndexPtr());
+  if (!same_pattern) {
+    llt_.analyzePattern(k);
+    pattern_outer_.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.outerSize() + 1);
+    pattern_inner_.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
+  }
+  llt_.factorize(k);
   ok_ = llt_.info() == Eigen::Success;
   low_u_.resize(0, 0);
 }

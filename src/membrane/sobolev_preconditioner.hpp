@@ -49,6 +49,7 @@ class SobolevPreconditioner {
  private:
   Eigen::MatrixXd applyBase(const Eigen::MatrixXd& r) const;
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt_;
+  std::vector<int> pattern_outer_, pattern_inner_;  // the pattern llt_ was analyzed for
   Eigen::VectorXd mass_;
   double kappa_ = 1.0;
   Eigen::MatrixXd low_u_, low_pu_;  // U and P0^-1 U

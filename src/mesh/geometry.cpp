@@ -4,6 +4,32 @@
 
 namespace cortex {
 
+namespace {
+
+// 1/6 sum (a-p).((b-p)x(c-p)) with p the first vertex: the reference point keeps the sum
+// well conditioned far from the origin.
+double signedVolume(const MeshTopology& topo, const double* x) {
+  const Vec3 p = vertexAt(x, 0);
+  return deterministicSum(topo.numFaces(),
+                          [&](Index f) {
+                            const Tri& t = topo.triangles[f];
+                            const Vec3 a = vertexAt(x, t[0]) - p, b = vertexAt(x, t[1]) - p, c = vertexAt(x, t[2]) - p;
+                            return a.dot(b.cross(c));
+                          }) /
+         6.0;
+}
+
+double faceArea(const double* x, const Tri& t) {
+  return 0.5 * (vertexAt(x, t[1]) - vertexAt(x, t[0])).cross(vertexAt(x, t[2]) - vertexAt(x, t[0])).norm();
+}
+
+}  // namespace
+
+AreaAndVolume areaAndVolume(const MeshTopology& topo, const double* x) {
+  return {deterministicSum(topo.numFaces(), [&](Index f) { return faceArea(x, topo.triangles[f]); }),
+          signedVolume(topo, x)};
+}
+
 void MeshGeometry::compute(const MeshTopology& topo, const double* x) {
   const Index nf = topo.numFaces();
   const Index nv = topo.numVertices();
@@ -39,13 +65,7 @@ void MeshGeometry::compute(const MeshTopology& topo, const double* x) {
   });
 
   area = deterministicSum(nf, [&](Index f) { return face_area[f]; });
-  const Vec3 p = vertexAt(x, 0);  // reference point: keeps the sum well conditioned far from the origin
-  volume = deterministicSum(nf, [&](Index f) {
-             const Tri& t = topo.triangles[f];
-             const Vec3 a = vertexAt(x, t[0]) - p, b = vertexAt(x, t[1]) - p, c = vertexAt(x, t[2]) - p;
-             return a.dot(b.cross(c));
-           }) /
-           6.0;
+  volume = signedVolume(topo, x);
 }
 
 }  // namespace cortex

@@ -15,7 +15,8 @@ namespace cortex {
 
 Simulation::Simulation(System& system, const SimulationConfig& simulation,
                        const MinimizerSettings& mechanics, RunObserver& observer)
-    : system_(system), sim_(simulation), mech_(mechanics), observer_(observer) {
+    : system_(system), sim_(simulation), mech_(mechanics), observer_(observer),
+      warm_starts_(system.membranes().size()) {
   // Exact area and volume are constraints of the shape relaxation; the other minimizers
   // would silently drop them.
   if (mech_.kind != MinimizerKind::kAuto)
@@ -150,8 +151,10 @@ MinimizationResult Simulation::relaxMembranes() {
   RunCounters& c = system_.counters;
   ShapeRelaxationSettings settings{mech_.force_tolerance_given ? mech_.force_tolerance : 0.0, mech_.max_iterations, {}};
   bool remeshed = false;
-  for (auto& m : system_.membranes()) {
+  for (std::size_t i = 0; i < system_.membranes().size(); ++i) {
+    Membrane* m = system_.membranes()[i].get();
     settings.progress = progressOf(m->name());
+    settings.warm_start = &warm_starts_[i];
     const ShapeRelaxationReport rep = relaxMembraneShape(*m, system_.forceField(), system_.time(), settings);
     c.remesh_seconds += rep.remesh_seconds;
     c.mechanics_seconds -= rep.remesh_seconds;  // counted apart
@@ -165,9 +168,11 @@ MinimizationResult Simulation::relaxMembranes() {
       held += fmt::format("; volume held (error {:.2g}), pressure difference {:.6g} pN/nm^2", rep.volume_error,
                           m->equilibrium().pressure);
     spdlog::debug("t = {:.6g} s: membrane \"{}\" relaxed{} in {} outer steps, {} iterations, {} force evaluations, "
-                  "{} factorizations, {} remeshes, {} vertices; max normal force {:.3g} pN (tolerance {:.3g} pN){}",
+                  "{} constraint evaluations, {} factorizations, {} preconditioner solves, {} remeshes, {} vertices; max "
+                  "normal force {:.3g} pN (tolerance {:.3g} pN){}",
                   system_.time(), m->name(), rep.converged ? "" : " (NOT converged: " + rep.stop_reason + ")",
-                  rep.outer, rep.iterations, rep.force_evaluations, rep.factorizations, rep.remeshes, rep.vertices,
+                  rep.outer, rep.iterations, rep.force_evaluations, rep.constraint_evaluations, rep.factorizations,
+                  rep.preconditioner_solves, rep.remeshes, rep.vertices,
                   rep.max_normal_force, rep.force_tolerance, held);
     r.iterations += rep.iterations;
     r.energy += rep.energy;
@@ -241,6 +246,7 @@ MinimizationResult Simulation::relax() {
   MinimizationResult r{true, 0, 0.0, 0.0, "nothing to relax"};
   RunCounters& c = system_.counters;
   const bool by_body = mech_.kind == MinimizerKind::kAuto;
+  for (ShapeRelaxationWarmStart& w : warm_starts_) w.newWindow();
   if (system_.hasMechanics()) {
     const auto start = std::chrono::steady_clock::now();
     const double force_seconds = system_.forceField().forceSeconds();

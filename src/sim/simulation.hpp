@@ -3,8 +3,11 @@
 // RunObserver interface, so this folder owns no file format.
 #pragma once
 
-#include "sim/run_config.hpp"
+#include <vector>
+
 #include "mech/minimizer.hpp"
+#include "membrane/shape_relaxation.hpp"
+#include "sim/run_config.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -60,6 +63,8 @@ class Simulation {
   SimulationConfig sim_;
   MinimizerSettings mech_;
   RunObserver& observer_;
+  // One per membrane, in the System's order: what its relaxations within a window share.
+  std::vector<ShapeRelaxationWarmStart> warm_starts_;
 };
 
 }  // namespace cortex

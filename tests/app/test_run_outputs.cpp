@@ -231,7 +231,11 @@ void expectResumeIsBitIdentical(const std::function<std::string(double)>& config
     EXPECT_EQ(sa[i].triangles, sb[i].triangles) << "snapshot " << i;
     EXPECT_TRUE(bitIdentical(sa[i].vertices, sb[i].vertices)) << "snapshot " << i;
   }
-  EXPECT_EQ(countOccurrences(readFile(b / "trajectory.xdmf"), "<Time "), sa.size());
+  // The resumed XDMF still indexes every snapshot (a time per object and snapshot).
+  const std::size_t times = countOccurrences(readFile(a / "trajectory.xdmf"), "<Time ");
+  EXPECT_GE(times, sa.size());
+  EXPECT_EQ(times % sa.size(), 0u);
+  EXPECT_EQ(countOccurrences(readFile(b / "trajectory.xdmf"), "<Time "), times);
   // The observables table too (bitwise: it holds NaN), but for the wall clock.
   const auto table = [](const fs::path& outdir) {
     const h5::File index = h5::File::openReadOnly(outdir / "trajectory.h5");
@@ -283,6 +287,50 @@ TEST(Resume, ContinuesBitIdenticallyWithExactConstraints) {
     std::string text = vesicleConfig(end, 200.0, "remesh = true");
     for (const char* line : {"area_modulus = 400.0\n", "volume_modulus = 0.8\n"}) text.erase(text.find(line), std::strlen(line));
     return text;
+  });
+}
+
+// Filaments growing inside a vesicle push on it: every window relaxes the membrane
+// several times, the later relaxations on the factorization of the first
+// (ShapeRelaxationWarmStart; 21 of the 35 relaxations of this run reuse one). What is
+// reused must not outlive its window, or a resumed run would relax differently.
+TEST(Resume, ContinuesBitIdenticallyWithFilamentsPushingTheMembrane) {
+  expectResumeIsBitIdentical([](double end_time) {
+    return fmt::format(R"([simulation]
+seed = 4
+end_time = {}
+chemistry_window = 0.02
+snapshot_interval = 0.1
+
+[compartments]
+size = 200.0
+shape = [4, 4, 4]
+
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+center = [400.0, 400.0, 400.0]
+radius = 250.0
+mesh_size = 60.0
+bending_modulus = 100.0
+remesh = true
+
+[[species]]
+name = "G"
+diffusion = 2.0e7
+copies = 3000
+inside = "vesicle"
+
+[[filament_type]]
+name = "actin"
+monomer_species = "G"
+
+[[filaments]]
+count = 12
+length = 150.0
+inside = "vesicle"
+)",
+                       end_time);
   });
 }
 

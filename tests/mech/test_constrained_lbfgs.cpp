@@ -36,7 +36,9 @@ class Quadratic final : public ConstrainedProblem {
     }
   }
   Eigen::VectorXd constraintScale() const override { return Eigen::VectorXd::Ones(numConstraints()); }
+  long preconditioner_columns = 0;  // columns P^-1 was applied to
   Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) override {
+    preconditioner_columns += r.cols();
     if (!exact_preconditioner) return r;
     return a.cwiseInverse().asDiagonal() * r;
   }
@@ -108,6 +110,39 @@ TEST(ConstrainedLbfgs, SatisfiesStationarityWithANonlinearConstraint) {
   EXPECT_NEAR(u.norm(), q.radius, 1e-9);
   const double lambda = r.multipliers[0], mu = r.multipliers[1];
   for (Index i = 0; i < 50; ++i) EXPECT_NEAR(q.a[i] * u[i] - q.b[i], lambda + 2.0 * mu * u[i], 1e-8) << i;
+}
+
+// Far off the sphere |u| = r (|u| = 0.29 against r = 1.5): the restoration's chord steps
+// alone would crawl, Newton steps take over, and the result is the same constrained
+// minimum as from a start close to the sphere.
+TEST(ConstrainedLbfgs, RestoresFromFarOffANonlinearConstraint) {
+  Quadratic q = quadratic();
+  q.radius = 1.5;
+  Eigen::VectorXd near = Eigen::VectorXd::Constant(50, q.c / 50.0);
+  near[0] += 1.0, near[1] -= 1.0;
+  Eigen::VectorXd far = 0.2 * near;  // both constraints violated, the sum 5-fold
+  ASSERT_TRUE(solve(q, near, 1e-9, 0.5).converged);
+  const ConstrainedLbfgsResult r = solve(q, far, 1e-9, 0.5);
+  ASSERT_TRUE(r.converged) << r.stop_reason;
+  EXPECT_NEAR(far.norm(), q.radius, 1e-9);
+  EXPECT_LT((far - near).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+// From the minimum itself (a converged shape confirmed on fresh normals, a membrane the
+// filaments did not move) the minimizer stops at once with the right multiplier and
+// without a single preconditioner solve: they are the costliest part of a membrane's
+// iteration.
+TEST(ConstrainedLbfgs, AStartAtTheMinimumNeedsNoPreconditionerSolve) {
+  Quadratic q = quadratic();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(50);
+  ASSERT_TRUE(solve(q, u, 1e-10, 1e9).converged);
+  q.preconditioner_columns = 0;
+  const ConstrainedLbfgsResult r = solve(q, u, 1e-9, 1e9);
+  ASSERT_TRUE(r.converged) << r.stop_reason;
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_EQ(q.preconditioner_columns, 0);
+  EXPECT_NEAR(r.multipliers[0], linearMultiplier(q), 1e-8);
+  EXPECT_LE(r.max_residual, 1e-9);
 }
 
 // A restoration that lands in a forbidden region (infinite energy: in a run, a membrane

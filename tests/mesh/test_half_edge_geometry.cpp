@@ -137,6 +137,19 @@ TEST(Geometry, AreaGradientEqualsCotanLaplacianOfPosition) {
   }
 }
 
+// The constraint check's shortcut sums exactly what compute sums: a shape that holds its
+// area and volume by one holds them by the other, to the last bit (sphereMesh's third
+// argument perturbs the vertices, so no symmetry hides a difference).
+TEST(Geometry, AreaAndVolumeAloneEqualTheFullComputationBitForBit) {
+  for (const double jitter : {0.0, 2.0, 5.0}) {
+    const SurfaceMesh m = testing::sphereMesh(100.0, 3, jitter, Vec3(300, -200, 50));
+    const MeshGeometry g = geometryOf(m);
+    const AreaAndVolume av = areaAndVolume(MeshTopology::of(m), testing::flatPositions(m).data());
+    EXPECT_EQ(av.area, g.area) << "jitter " << jitter;
+    EXPECT_EQ(av.volume, g.volume) << "jitter " << jitter;
+  }
+}
+
 TEST(Geometry, VolumeIsIndependentOfTranslation) {
   const MeshGeometry a = geometryOf(testing::sphereMesh(100.0, 3, 2.0));
   const MeshGeometry b = geometryOf(testing::sphereMesh(100.0, 3, 2.0, Vec3(1e4, -2e4, 3e4)));
