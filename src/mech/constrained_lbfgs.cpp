@@ -51,6 +51,9 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
     ++r.constraint_evaluations;
     f.jac = jac;
     const int linear = p.numLinearConstraints();
+    if (const Eigen::MatrixXd* kept = p.keptLinearW();
+        linear > 0 && linear_w.cols() != linear && kept && kept->cols() == linear && kept->rows() == jac.cols())
+      linear_w = *kept;
     if (linear > 0 && linear_w.cols() == linear) {
       // The linear rows' Jacobian never changes: their columns of W are computed once.
       f.w.resize(jac.cols(), m);
@@ -58,7 +61,10 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
       f.w.rightCols(linear) = linear_w;
     } else {
       f.w = p.precondition(jac.transpose());
-      if (linear > 0) linear_w = f.w.rightCols(linear);
+      if (linear > 0) {
+        linear_w = f.w.rightCols(linear);
+        p.keepLinearW(linear_w);
+      }
     }
     f.s_inv = (jac * f.w).inverse();
     return f;

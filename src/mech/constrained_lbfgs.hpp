@@ -44,6 +44,12 @@ class ConstrainedProblem {
   // The last numLinearConstraints() rows are linear with a constant Jacobian (e.g. rigid
   // modes): their columns of W = P^-1 J^T are computed once per call.
   virtual int numLinearConstraints() const { return 0; }
+  // Those columns kept by the problem from an earlier call with the same P, if any (null:
+  // computed, then offered to keepLinearW). The rows may have changed a little since: any
+  // W with J W invertible keeps the projection exact (J Pi = 0), and directions descend
+  // because the residual stays W-orthogonal.
+  virtual const Eigen::MatrixXd* keptLinearW() const { return nullptr; }
+  virtual void keepLinearW(const Eigen::MatrixXd& /*w*/) {}
   // z = P^-1 r for each column.
   virtual Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) = 0;
   // False if u is geometrically unacceptable (e.g. a folded triangle).

@@ -93,8 +93,14 @@ TermScales scalesOf(const Membrane& m, const std::vector<EnergyTerm*>& terms) {
 class NormalDisplacementProblem final : public ConstrainedProblem {
  public:
   NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
-                            bool exact_volume, const SobolevPreconditioner& p)
-      : m_(m), field_(field), terms_(std::move(terms)), exact_area_(exact_area), exact_volume_(exact_volume), p_(p) {
+                            bool exact_volume, const SobolevPreconditioner& p, Eigen::MatrixXd* kept_rigid_w = nullptr)
+      : m_(m),
+        field_(field),
+        terms_(std::move(terms)),
+        exact_area_(exact_area),
+        exact_volume_(exact_volume),
+        p_(p),
+        kept_rigid_w_(kept_rigid_w) {
     x0_ = flatPositions(m.mesh());
     normals_ = vertexNormals(m.mesh());
     fixed_ = m.fixedVertices();
@@ -170,14 +176,18 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   void constraintValues(const Eigen::VectorXd& u, Eigen::VectorXd& c) override {
     c.resize(numConstraints());
     int row = 0;
-    if (exact_area_ || exact_volume_) {
-      const AreaAndVolume av = areaAndVolume(m_.topology(), positionsAt(u).data());
-      if (exact_area_) c[row++] = av.area - area_target;
-      if (exact_volume_) c[row++] = av.volume - volume_target;
-    }
+    if (exact_area_ || exact_volume_) positionsAt(u);
+    if (exact_area_) c[row++] = totalArea(m_.topology(), x_.data()) - area_target;
+    if (exact_volume_) c[row++] = signedVolume(m_.topology(), x_.data()) - volume_target;
     if (rigid_.rows() > 0) c.tail(rigid_.rows()) = rigid_ * u;
   }
   int numLinearConstraints() const override { return static_cast<int>(rigid_.rows()); }
+  const Eigen::MatrixXd* keptLinearW() const override {
+    return kept_rigid_w_ && kept_rigid_w_->size() > 0 ? kept_rigid_w_ : nullptr;
+  }
+  void keepLinearW(const Eigen::MatrixXd& w) override {
+    if (kept_rigid_w_) *kept_rigid_w_ = w;
+  }
   Eigen::VectorXd constraintScale() const override {
     Eigen::VectorXd s = Eigen::VectorXd::Ones(numConstraints());  // rigid rows: nm
     int row = 0;
@@ -243,6 +253,7 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   std::vector<EnergyTerm*> terms_;
   bool exact_area_, exact_volume_;
   const SobolevPreconditioner& p_;
+  Eigen::MatrixXd* kept_rigid_w_;  // P^-1 of the rigid rows, kept between outer steps
   Eigen::VectorXd x0_, x_, grad3_;
   Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
   std::uint64_t evaluated_version_ = 0;
@@ -318,11 +329,12 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
                     m.fixedVertices());
       ++rep.factorizations;
       warm.factored = true;
+      warm.rigid_w.resize(0, 0);
       warm.connectivity = m.connectivityVersion();
       warm.vertices = n;
       warm.outer_since_factoring = 0;
     }
-    NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond);
+    NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm.rigid_w);
     if (scales.area_stiffness > 0 || (closed && scales.volume_stiffness > 0)) {
       // Stiff global penalties, k/X0 ∇X ∇Xᵀ, as an exact low-rank part of the metric.
       Eigen::VectorXd c;

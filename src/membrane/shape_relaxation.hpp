@@ -49,8 +49,14 @@ struct ShapeRelaxationWarmStart {
   std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() it was factored for
   Index vertices = 0;
   int outer_since_factoring = 0;
+  // P^-1 of the rigid-mode rows under this factorization (ConstrainedProblem::keptLinearW):
+  // six solves per outer step saved; the rows turn with the normals, slowly.
+  Eigen::MatrixXd rigid_w;
 
-  void newWindow() { factored = false; }
+  void newWindow() {
+    factored = false;
+    rigid_w.resize(0, 0);
+  }
 };
 
 struct ShapeRelaxationSettings {

@@ -6,6 +6,16 @@ namespace cortex {
 
 namespace {
 
+double faceArea(const double* x, const Tri& t) {
+  return 0.5 * (vertexAt(x, t[1]) - vertexAt(x, t[0])).cross(vertexAt(x, t[2]) - vertexAt(x, t[0])).norm();
+}
+
+}  // namespace
+
+double totalArea(const MeshTopology& topo, const double* x) {
+  return deterministicSum(topo.numFaces(), [&](Index f) { return faceArea(x, topo.triangles[f]); });
+}
+
 // 1/6 sum (a-p).((b-p)x(c-p)) with p the first vertex: the reference point keeps the sum
 // well conditioned far from the origin.
 double signedVolume(const MeshTopology& topo, const double* x) {
@@ -17,17 +27,6 @@ double signedVolume(const MeshTopology& topo, const double* x) {
                             return a.dot(b.cross(c));
                           }) /
          6.0;
-}
-
-double faceArea(const double* x, const Tri& t) {
-  return 0.5 * (vertexAt(x, t[1]) - vertexAt(x, t[0])).cross(vertexAt(x, t[2]) - vertexAt(x, t[0])).norm();
-}
-
-}  // namespace
-
-AreaAndVolume areaAndVolume(const MeshTopology& topo, const double* x) {
-  return {deterministicSum(topo.numFaces(), [&](Index f) { return faceArea(x, topo.triangles[f]); }),
-          signedVolume(topo, x)};
 }
 
 void MeshGeometry::compute(const MeshTopology& topo, const double* x) {

@@ -32,10 +32,8 @@ struct MeshGeometry {
 // Total area and signed volume alone, summed exactly as MeshGeometry::compute sums them:
 // what checking an area or volume constraint needs, at a fraction of compute's cost (no
 // per-vertex gather).
-struct AreaAndVolume {
-  double area = 0.0, volume = 0.0;
-};
-AreaAndVolume areaAndVolume(const MeshTopology& topo, const double* x);
+double totalArea(const MeshTopology& topo, const double* x);
+double signedVolume(const MeshTopology& topo, const double* x);
 
 inline Vec3 vertexAt(const double* x, Index v) { return Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]); }
 

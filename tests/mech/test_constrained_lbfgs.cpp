@@ -36,6 +36,13 @@ class Quadratic final : public ConstrainedProblem {
     }
   }
   Eigen::VectorXd constraintScale() const override { return Eigen::VectorXd::Ones(numConstraints()); }
+  // The sum row as a linear constraint whose W column is kept between calls, as the
+  // membrane's rigid rows are (ConstrainedProblem::keptLinearW); only without the sphere.
+  bool keep_linear_w = false;
+  Eigen::MatrixXd kept_w;
+  int numLinearConstraints() const override { return keep_linear_w ? 1 : 0; }
+  const Eigen::MatrixXd* keptLinearW() const override { return kept_w.size() ? &kept_w : nullptr; }
+  void keepLinearW(const Eigen::MatrixXd& w) override { kept_w = w; }
   long preconditioner_columns = 0;  // columns P^-1 was applied to
   Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) override {
     preconditioner_columns += r.cols();
@@ -143,6 +150,24 @@ TEST(ConstrainedLbfgs, AStartAtTheMinimumNeedsNoPreconditionerSolve) {
   EXPECT_EQ(q.preconditioner_columns, 0);
   EXPECT_NEAR(r.multipliers[0], linearMultiplier(q), 1e-8);
   EXPECT_LE(r.max_residual, 1e-9);
+}
+
+// W of a linear row kept from a call with another metric (here P = diag(a) of a problem
+// whose a differed by up to 2x) is not P^-1 J^T of this one: the projection stays exact
+// and the minimum is the same (same tolerances as the first test); the kept column
+// spares its solve.
+TEST(ConstrainedLbfgs, AKeptLinearColumnFromAnotherMetricReachesTheSameMinimum) {
+  Quadratic q = quadratic();
+  q.keep_linear_w = true;
+  q.kept_w = q.a.cwiseInverse().cwiseProduct(Eigen::VectorXd::LinSpaced(50, 0.5, 2.0));
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(50);
+  const ConstrainedLbfgsResult r = solve(q, u, 1e-10, 1e9);
+  ASSERT_TRUE(r.converged) << r.stop_reason;
+  const double lambda = linearMultiplier(q);
+  EXPECT_NEAR(u.sum(), q.c, 1e-10);
+  for (Index i = 0; i < 50; ++i) EXPECT_NEAR(u[i], (q.b[i] + lambda) / q.a[i], 1e-9);
+  EXPECT_NEAR(r.multipliers[0], lambda, 1e-8);
+  EXPECT_EQ(q.preconditioner_columns, r.iterations) << "one solve per iteration, none for the kept column";
 }
 
 // A restoration that lands in a forbidden region (infinite energy: in a run, a membrane
