@@ -200,8 +200,13 @@ MinimizationResult Simulation::relaxFilaments() {
     Eigen::VectorXd x = system_.coordinates();
     MinimizerSettings filament_settings = mech_;
     filament_settings.progress = progressOf("filaments");
+    const long evaluations_before = system_.forceField().forceEvaluations();
     const MinimizationResult f = minimize(filaments, x, filament_settings);
     system_.setCoordinates(x);
+    spdlog::debug("t = {:.6g} s: filaments relaxed{} in {} iterations, {} force evaluations; max force {:.3g} pN "
+                  "(tolerance {:.3g} pN)",
+                  system_.time(), f.converged ? "" : " (NOT converged: " + f.stop_reason + ")", f.iterations,
+                  system_.forceField().forceEvaluations() - evaluations_before, f.max_force, mech_.force_tolerance);
     r.iterations += f.iterations;
     r.energy += f.energy;
     r.max_force = std::max(r.max_force, f.max_force);
