@@ -83,18 +83,22 @@ bool MembraneBeadExclusion::listIsStale() const {
 
 void MembraneBeadExclusion::rebuild() {
   ++rebuilds_;
+  const auto& triangles = membrane_.topology().triangles;
+  const double reach = params_.cutoff + skin_, reach2 = reach * reach;
+  // The cells index the triangles as they were at the last build: beads that moved past
+  // the skin under a held membrane (a filament relaxation) need new pairs, not new cells.
+  const bool same_triangles =
+      built_ && built_connectivity_ == membrane_.connectivityVersion() && built_vertex_x_ == vertex_x_;
+  if (!same_triangles) cells_ = TriangleCells(vertex_x_, triangles, reach);
   built_ = true;
   built_connectivity_ = membrane_.connectivityVersion();
   built_layout_ = network_.layout().version;
   built_vertex_x_ = vertex_x_;
   built_bead_x_ = bead_x_;
   pairs_.clear();
-  const auto& triangles = membrane_.topology().triangles;
-  const double reach = params_.cutoff + skin_, reach2 = reach * reach;
-  const TriangleCells cells(vertex_x_, triangles, reach);
   for (std::size_t b = 0; b < bead_x_.size(); ++b) {
     const Vec3& p = bead_x_[b];
-    cells.near(p, [&](Index f) {
+    cells_.near(p, [&](Index f) {
       const Tri& t = triangles[f];
       if ((closestPointOnTriangle(p, vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]]).point - p).squaredNorm() <
           reach2)

@@ -107,6 +107,7 @@ class MembraneBeadExclusion final : public EnergyTerm {
   bool built_ = false;
   std::uint64_t built_connectivity_ = 0, built_layout_ = 0;
   std::vector<Vec3> built_vertex_x_, built_bead_x_;
+  TriangleCells cells_;  // of the triangles at built_vertex_x_
   std::int64_t rebuilds_ = 0;
   std::size_t active_pairs_ = 0;
 };
