@@ -94,14 +94,15 @@ TermScales scalesOf(const Membrane& m, const std::vector<EnergyTerm*>& terms) {
 class NormalDisplacementProblem final : public ConstrainedProblem {
  public:
   NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
-                            bool exact_volume, const SobolevPreconditioner& p, Eigen::MatrixXd* kept_rigid_w = nullptr)
+                            bool exact_volume, const SobolevPreconditioner& p,
+                            ShapeRelaxationWarmStart* kept_columns = nullptr)
       : m_(m),
         field_(field),
         terms_(std::move(terms)),
         exact_area_(exact_area),
         exact_volume_(exact_volume),
         p_(p),
-        kept_rigid_w_(kept_rigid_w) {
+        kept_(kept_columns) {
     x0_ = flatPositions(m.mesh());
     normals_ = vertexNormals(m.mesh());
     fixed_ = m.fixedVertices();
@@ -183,11 +184,21 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
     if (rigid_.rows() > 0) c.tail(rigid_.rows()) = rigid_ * u;
   }
   int numLinearConstraints() const override { return static_cast<int>(rigid_.rows()); }
+  // Kept columns serve only rows that still mean the same modes: as many, each turned
+  // by less than ~25° (the rows are orthonormal; which degenerate ones were dropped
+  // depends on the shape).
   const Eigen::MatrixXd* keptLinearW() const override {
-    return kept_rigid_w_ && kept_rigid_w_->size() > 0 ? kept_rigid_w_ : nullptr;
+    if (!kept_ || kept_->rigid_w.size() == 0 || kept_->rigid_rows.rows() != rigid_.rows() ||
+        kept_->rigid_rows.cols() != rigid_.cols())
+      return nullptr;
+    for (Index i = 0; i < rigid_.rows(); ++i)
+      if (!(kept_->rigid_rows.row(i).dot(rigid_.row(i)) > 0.9)) return nullptr;
+    return &kept_->rigid_w;
   }
   void keepLinearW(const Eigen::MatrixXd& w) override {
-    if (kept_rigid_w_) *kept_rigid_w_ = w;
+    if (!kept_) return;
+    kept_->rigid_w = w;
+    kept_->rigid_rows = rigid_;
   }
   Eigen::VectorXd constraintScale() const override {
     Eigen::VectorXd s = Eigen::VectorXd::Ones(numConstraints());  // rigid rows: nm
@@ -254,7 +265,7 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   std::vector<EnergyTerm*> terms_;
   bool exact_area_, exact_volume_;
   const SobolevPreconditioner& p_;
-  Eigen::MatrixXd* kept_rigid_w_;  // P^-1 of the rigid rows, kept between outer steps
+  ShapeRelaxationWarmStart* kept_;  // where P^-1 of the rigid rows is kept between outer steps
   Eigen::VectorXd x0_, x_, grad3_;
   Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
   std::uint64_t evaluated_version_ = 0;
@@ -330,12 +341,12 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
                     m.fixedVertices());
       ++rep.factorizations;
       warm.factored = true;
-      warm.rigid_w.resize(0, 0);
+      warm.forgetRigidColumns();
       warm.connectivity = m.connectivityVersion();
       warm.vertices = n;
       warm.outer_since_factoring = 0;
     }
-    NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm.rigid_w);
+    NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm);
     if (scales.area_stiffness > 0 || (closed && scales.volume_stiffness > 0)) {
       // Stiff global penalties, k/X0 ∇X ∇Xᵀ, as an exact low-rank part of the metric.
       Eigen::VectorXd c;
@@ -394,7 +405,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     // The kept rigid columns follow the normals they were computed with; after a large
     // move they cost more iterations than their six solves (+14-17% evaluations at 45k
     // vertices in bench/relaxation.cpp when kept regardless).
-    if (moved > kKeepRigidColumnsStrain) warm.rigid_w.resize(0, 0);
+    if (moved > kKeepRigidColumnsStrain) warm.forgetRigidColumns();
     spdlog::debug("membrane \"{}\" relaxation: outer step {}, {} vertices, {} iterations, {} force evaluations, "
                   "moved {:.3g} (strain), max normal force {:.3g} pN, energy {:.10g} pN nm ({})",
                   m.name(), rep.outer, n, last.iterations, last.evaluations, moved, last.max_residual, last.value,

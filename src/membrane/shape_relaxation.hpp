@@ -49,13 +49,18 @@ struct ShapeRelaxationWarmStart {
   std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() it was factored for
   Index vertices = 0;
   int outer_since_factoring = 0;
-  // P^-1 of the rigid-mode rows under this factorization (ConstrainedProblem::keptLinearW):
-  // six solves per outer step saved; the rows turn with the normals, slowly.
-  Eigen::MatrixXd rigid_w;
+  // P^-1 of the rigid-mode rows under this factorization (ConstrainedProblem::keptLinearW),
+  // and the rows they were computed for: six solves per outer step saved while the rows
+  // only turn a little with the normals.
+  Eigen::MatrixXd rigid_w, rigid_rows;
 
+  void forgetRigidColumns() {
+    rigid_w.resize(0, 0);
+    rigid_rows.resize(0, 0);
+  }
   void newWindow() {
     factored = false;
-    rigid_w.resize(0, 0);
+    forgetRigidColumns();
   }
 };
 
