@@ -334,7 +334,8 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     MeshGeometry geo0;
     geo0.compute(m.topology(), x0.data());
     const double radius = std::sqrt(geo0.area / (4.0 * constants::kPi));
-    if (!warm.factored || warm.connectivity != m.connectivityVersion() || warm.vertices != n ||
+    // Remeshing, the only change of the vertex count, bumps the connectivity version.
+    if (!warm.factored || warm.connectivity != m.connectivityVersion() ||
         warm.outer_since_factoring >= kRefactorInterval) {
       const Timer timer{rep.factor_seconds};
       precond.build(scalarMeshOperators(x0.data(), n, m.topology().triangles), scales.kappa, kShift / (radius * radius),
@@ -343,7 +344,6 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       warm.factored = true;
       warm.forgetRigidColumns();
       warm.connectivity = m.connectivityVersion();
-      warm.vertices = n;
       warm.outer_since_factoring = 0;
     }
     NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm);

@@ -47,7 +47,6 @@ struct ShapeRelaxationWarmStart {
   SobolevPreconditioner preconditioner;
   bool factored = false;
   std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() it was factored for
-  Index vertices = 0;
   int outer_since_factoring = 0;
   // P^-1 of the rigid-mode rows under this factorization (ConstrainedProblem::keptLinearW),
   // and the rows they were computed for: six solves per outer step saved while the rows
