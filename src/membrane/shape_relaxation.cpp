@@ -4,20 +4,20 @@
 #include <spdlog/spdlog.h>
 
 #include <Eigen/Dense>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "core/constants.hpp"
+#include "core/error.hpp"
+#include "core/scoped_timer.hpp"
 #include "mech/constrained_lbfgs.hpp"
 #include "membrane/area_energy.hpp"
-#include "core/error.hpp"
 #include "membrane/bending_energy.hpp"
+#include "membrane/normal_displacement_problem.hpp"
 #include "membrane/regularization_energy.hpp"
 #include "membrane/sobolev_preconditioner.hpp"
 #include "membrane/volume_energy.hpp"
 #include "mesh/mesh_quality.hpp"
-#include "mesh/vertex_normals.hpp"
 
 namespace cortex {
 namespace {
@@ -38,21 +38,6 @@ constexpr int kMemory = 10;                // L-BFGS pairs
 constexpr double kConstraintTolerance = 1e-10;  // relative
 constexpr double kLargestNaturalTolerance = 0.1;  // pN
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Adds the seconds since construction to `total` when it goes out of scope.
-struct Timer {
-  double& total;
-  Clock::time_point start = Clock::now();
-  ~Timer() { total += since(start); }
-};
-
-Eigen::VectorXd flatPositions(const SurfaceMesh& mesh) {
-  Eigen::VectorXd x(3 * mesh.numVertices());
-  for (Index v = 0; v < mesh.numVertices(); ++v) x.segment<3>(3 * v) = mesh.positions()[v];
-  return x;
-}
 
 // The membrane's terms read its coordinates at its offset in the System's vector; the
 // relaxation evaluates them on the membrane's own coordinates, at offset 0.
@@ -90,190 +75,6 @@ TermScales scalesOf(const Membrane& m, const std::vector<EnergyTerm*>& terms) {
   return s;
 }
 
-// The membrane's energy as a function of normal displacements u about x0.
-class NormalDisplacementProblem final : public ConstrainedProblem {
- public:
-  NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
-                            bool exact_volume, const SobolevPreconditioner& p,
-                            ShapeRelaxationWarmStart* kept_columns = nullptr)
-      : m_(m),
-        field_(field),
-        terms_(std::move(terms)),
-        exact_area_(exact_area),
-        exact_volume_(exact_volume),
-        p_(p),
-        kept_(kept_columns) {
-    x0_ = flatPositions(m.mesh());
-    normals_ = vertexNormals(m.mesh());
-    fixed_ = m.fixedVertices();
-    const Index nf = m.topology().numFaces();
-    face_normal0_.resize(nf);
-    for (Index f = 0; f < nf; ++f) face_normal0_[f] = faceNormal(x0_, f).normalized();
-    x_.resize(x0_.size());
-    grad3_.resize(x0_.size());
-    buildRigidRows();
-  }
-
-  // Constraint targets (intermediate ones during continuation).
-  double area_target = 0.0, volume_target = 0.0;
-  double force_seconds = 0.0, solve_seconds = 0.0;
-
-  Index size() const override { return static_cast<Index>(normals_.size()); }
-  int numConstraints() const override { return int(exact_area_) + int(exact_volume_) + static_cast<int>(rigid_.rows()); }
-  const std::vector<Vec3>& normals() const { return normals_; }
-
-  const Eigen::VectorXd& positionsAt(const Eigen::VectorXd& u) {
-    for (Index v = 0; v < size(); ++v) x_.segment<3>(3 * v) = x0_.segment<3>(3 * v) + u[v] * normals_[v];
-    return x_;
-  }
-  // The energy and its full gradient (3 per vertex) at u.
-  double fullValueAndGradient(const Eigen::VectorXd& u) {
-    const Timer timer{force_seconds};
-    positionsAt(u);
-    grad3_.setZero();
-    const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_};
-    evaluated_u_ = u;
-    evaluated_version_ = e.version;
-    double total = 0.0;
-    for (EnergyTerm* t : terms_) total += t->evaluate(e);
-    return total;
-  }
-  const Eigen::VectorXd& fullGradient() const { return grad3_; }
-
-  double valueAndGradient(const Eigen::VectorXd& u, Eigen::VectorXd& g) override {
-    const double total = fullValueAndGradient(u);
-    g.resize(size());
-    for (Index v = 0; v < size(); ++v) g[v] = fixed_[v] ? 0.0 : normals_[v].dot(grad3_.segment<3>(3 * v));
-    // Forces that are not numbers make the point unacceptable, like an infinite energy:
-    // line searches back off, and a start there ends the relaxation (reported below).
-    if (!g.allFinite()) return std::numeric_limits<double>::infinity();
-    return total;
-  }
-  void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& c, Eigen::MatrixXd& jac) override {
-    const MeshGeometry* geometry = nullptr;
-    if (exact_area_ || exact_volume_) {
-      // At the point of the last energy evaluation (an accepted step) its terms computed
-      // the geometry already.
-      if (u.size() == evaluated_u_.size() && u == evaluated_u_) geometry = m_.cachedGeometry(evaluated_version_);
-      if (!geometry) {
-        geometry_.compute(m_.topology(), positionsAt(u).data());
-        geometry = &geometry_;
-      }
-    }
-    c.resize(numConstraints());
-    jac.resize(numConstraints(), size());
-    int row = 0;
-    auto constraintRow = [&](double value, const std::vector<Vec3>& gradient) {
-      c[row] = value;
-      for (Index v = 0; v < size(); ++v) jac(row, v) = fixed_[v] ? 0.0 : normals_[v].dot(gradient[v]);
-      ++row;
-    };
-    if (exact_area_) constraintRow(geometry->area - area_target, geometry->area_gradient);
-    if (exact_volume_) constraintRow(geometry->volume - volume_target, geometry->volume_gradient);
-    if (rigid_.rows() > 0) {
-      c.tail(rigid_.rows()) = rigid_ * u;
-      jac.bottomRows(rigid_.rows()) = rigid_;
-    }
-  }
-  void constraintValues(const Eigen::VectorXd& u, Eigen::VectorXd& c) override {
-    c.resize(numConstraints());
-    int row = 0;
-    if (exact_area_ || exact_volume_) positionsAt(u);
-    if (exact_area_) c[row++] = totalArea(m_.topology(), x_.data()) - area_target;
-    if (exact_volume_) c[row++] = signedVolume(m_.topology(), x_.data()) - volume_target;
-    if (rigid_.rows() > 0) c.tail(rigid_.rows()) = rigid_ * u;
-  }
-  int numLinearConstraints() const override { return static_cast<int>(rigid_.rows()); }
-  // Kept columns serve only rows that still mean the same modes: as many, each turned
-  // by less than ~25° (the rows are orthonormal; which degenerate ones were dropped
-  // depends on the shape).
-  const Eigen::MatrixXd* keptLinearW() const override {
-    if (!kept_ || kept_->rigid_w.size() == 0 || kept_->rigid_rows.rows() != rigid_.rows() ||
-        kept_->rigid_rows.cols() != rigid_.cols())
-      return nullptr;
-    for (Index i = 0; i < rigid_.rows(); ++i)
-      if (!(kept_->rigid_rows.row(i).dot(rigid_.row(i)) > 0.9)) return nullptr;
-    return &kept_->rigid_w;
-  }
-  void keepLinearW(const Eigen::MatrixXd& w) override {
-    if (!kept_) return;
-    kept_->rigid_w = w;
-    kept_->rigid_rows = rigid_;
-  }
-  Eigen::VectorXd constraintScale() const override {
-    Eigen::VectorXd s = Eigen::VectorXd::Ones(numConstraints());  // rigid rows: nm
-    int row = 0;
-    if (exact_area_) s[row++] = area_target;
-    if (exact_volume_) s[row++] = volume_target;
-    return s;
-  }
-  Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) override {
-    const Timer timer{solve_seconds};
-    return p_.apply(r);
-  }
-  // No trial step may turn a face by more than 60° from where the outer step began.
-  bool admissible(const Eigen::VectorXd& u) override {
-    positionsAt(u);
-    for (std::size_t f = 0; f < face_normal0_.size(); ++f) {
-      const Vec3 n = faceNormal(x_, static_cast<Index>(f));
-      if (!(n.dot(face_normal0_[f]) > 0.5 * n.norm())) return false;
-    }
-    return true;
-  }
-
- private:
-  // Rigid motions as normal displacement fields (translations n·e_i, rotations
-  // n·(e_i × (x − c))) are exact null modes of the energy and the constraints, broken by
-  // the discretization at round-off level; left free, a minimizer turns a prolate
-  // vesicle by tens of degrees at great cost. Their area-weighted components are fixed;
-  // rows are orthonormalized and degenerate ones dropped (rotations about a symmetry
-  // axis). A membrane with fixed vertices has no rigid modes.
-  void buildRigidRows() {
-    for (char f : fixed_)
-      if (f) return;
-    const Index n = size();
-    Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
-    const auto& triangles = m_.topology().triangles;
-    for (Index f = 0; f < static_cast<Index>(triangles.size()); ++f)
-      for (Index v : triangles[f]) area[v] += faceNormal(x0_, f).norm() / 6.0;
-    Vec3 centroid = Vec3::Zero();
-    for (Index v = 0; v < n; ++v) centroid += area[v] * x0_.segment<3>(3 * v);
-    centroid /= area.sum();
-    std::vector<Eigen::VectorXd> rows;
-    for (int mode = 0; mode < 6; ++mode) {
-      Eigen::VectorXd r(n);
-      const Vec3 e = Vec3::Unit(mode % 3);
-      for (Index v = 0; v < n; ++v) {
-        const Vec3 field = mode < 3 ? e : Vec3(e.cross(Vec3(x0_.segment<3>(3 * v)) - centroid));
-        r[v] = area[v] * normals_[v].dot(field);
-      }
-      const double norm0 = r.norm();
-      for (const Eigen::VectorXd& q : rows) r -= q.dot(r) * q;
-      if (norm0 > 0 && r.norm() > 1e-3 * norm0) rows.push_back(r / r.norm());
-    }
-    rigid_.resize(static_cast<Index>(rows.size()), n);
-    for (std::size_t i = 0; i < rows.size(); ++i) rigid_.row(static_cast<Index>(i)) = rows[i].transpose();
-  }
-  Vec3 faceNormal(const Eigen::VectorXd& x, Index f) const {
-    const Tri& t = m_.topology().triangles[f];
-    const Vec3 a = x.segment<3>(3 * t[0]), b = x.segment<3>(3 * t[1]), c = x.segment<3>(3 * t[2]);
-    return (b - a).cross(c - a);
-  }
-
-  Membrane& m_;
-  ForceField& field_;
-  std::vector<EnergyTerm*> terms_;
-  bool exact_area_, exact_volume_;
-  const SobolevPreconditioner& p_;
-  ShapeRelaxationWarmStart* kept_;  // where P^-1 of the rigid rows is kept between outer steps
-  Eigen::VectorXd x0_, x_, grad3_;
-  Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
-  std::uint64_t evaluated_version_ = 0;
-  std::vector<Vec3> normals_, face_normal0_;
-  std::vector<char> fixed_;
-  MeshGeometry geometry_;
-  Eigen::MatrixXd rigid_;  // orthonormal rows fixing the rigid-body modes
-};
 
 // The relaxation's measure of a move, |u_v| k_v with k_v = 2|H_v| + 1/R: a strain, the
 // same on any mesh of the same shape.
@@ -299,7 +100,7 @@ double naturalForceTolerance(const Membrane& m, double t) {
 }
 
 ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double t, const ShapeRelaxationSettings& s) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   const AtOffsetZero at_zero(m);
   ShapeRelaxationReport rep;
   rep.force_tolerance = s.force_tolerance > 0 ? s.force_tolerance : naturalForceTolerance(m, t);
@@ -337,7 +138,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     // Remeshing, the only change of the vertex count, bumps the connectivity version.
     if (!warm.factored || warm.connectivity != m.connectivityVersion() ||
         warm.outer_since_factoring >= kRefactorInterval) {
-      const Timer timer{rep.factor_seconds};
+      const ScopedTimer timer{rep.factor_seconds};
       precond.build(scalarMeshOperators(x0.data(), n, m.topology().triangles), scales.kappa, kShift / (radius * radius),
                     m.fixedVertices());
       ++rep.factorizations;
@@ -416,7 +217,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       if (can_remesh && !final_remesh_done &&
           (moved_since_remesh > kRemeshStrain || measureQuality(m.mesh()).min_angle_deg < 25.0)) {
         // Once more on a fresh mesh for the converged shape, then stop.
-        const Timer timer{rep.remesh_seconds};
+        const ScopedTimer timer{rep.remesh_seconds};
         m.remesh(*m.remeshing());
         ++rep.remeshes;
         final_remesh_done = true;
@@ -438,7 +239,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     }
     // Mesh maintenance between outer steps.
     if (can_remesh && (moved_since_remesh > kRemeshAnyway || measureQuality(m.mesh()).min_angle_deg < 20.0)) {
-      const Timer timer{rep.remesh_seconds};
+      const ScopedTimer timer{rep.remesh_seconds};
       m.remesh(*m.remeshing());
       ++rep.remeshes;
       moved_since_remesh = 0.0;
@@ -515,7 +316,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   m.setEquilibrium(equilibrium);
   field.countForceEvaluations(rep.force_evaluations, rep.force_seconds);
   rep.preconditioner_solves = precond.solves() - solves_before;
-  rep.seconds = since(start);
+  rep.seconds = secondsSince(start);
   return rep;
 }
 

@@ -1,0 +1,73 @@
+// The membrane's energy as a function of normal displacements u about a shape x0,
+// x_v = x0_v + u_v n_v, with its exact area and volume constraints and the rigid-body
+// modes fixed: the problem shape_relaxation.cpp hands to the constrained L-BFGS
+// (mech/constrained_lbfgs.hpp) in each outer step.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "mech/constrained_lbfgs.hpp"
+#include "mech/force_field.hpp"
+#include "membrane/membrane.hpp"
+#include "membrane/shape_relaxation.hpp"
+#include "membrane/sobolev_preconditioner.hpp"
+#include "mesh/geometry.hpp"
+
+namespace cortex {
+
+// The mesh's positions as one vector (x, y, z per vertex).
+Eigen::VectorXd flatPositions(const SurfaceMesh& mesh);
+
+class NormalDisplacementProblem final : public ConstrainedProblem {
+ public:
+  // `kept_columns`: where P^-1 of the rigid rows is kept between outer steps (optional).
+  NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
+                            bool exact_volume, const SobolevPreconditioner& p,
+                            ShapeRelaxationWarmStart* kept_columns = nullptr);
+
+  // Constraint targets (intermediate ones during continuation).
+  double area_target = 0.0, volume_target = 0.0;
+  double force_seconds = 0.0, solve_seconds = 0.0;
+
+  Index size() const override { return static_cast<Index>(normals_.size()); }
+  int numConstraints() const override { return int(exact_area_) + int(exact_volume_) + static_cast<int>(rigid_.rows()); }
+  const std::vector<Vec3>& normals() const { return normals_; }
+
+  const Eigen::VectorXd& positionsAt(const Eigen::VectorXd& u);
+  // The energy and its full gradient (3 per vertex) at u.
+  double fullValueAndGradient(const Eigen::VectorXd& u);
+  const Eigen::VectorXd& fullGradient() const { return grad3_; }
+
+  double valueAndGradient(const Eigen::VectorXd& u, Eigen::VectorXd& g) override;
+  void constraints(const Eigen::VectorXd& u, Eigen::VectorXd& c, Eigen::MatrixXd& jac) override;
+  void constraintValues(const Eigen::VectorXd& u, Eigen::VectorXd& c) override;
+  int numLinearConstraints() const override { return static_cast<int>(rigid_.rows()); }
+  const Eigen::MatrixXd* keptLinearW() const override;
+  void keepLinearW(const Eigen::MatrixXd& w) override;
+  Eigen::VectorXd constraintScale() const override;
+  Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) override;
+  // No trial step may turn a face by more than 60° from where the outer step began.
+  bool admissible(const Eigen::VectorXd& u) override;
+
+ private:
+  void buildRigidRows();
+  Vec3 faceNormal(const Eigen::VectorXd& x, Index f) const;
+
+  Membrane& m_;
+  ForceField& field_;
+  std::vector<EnergyTerm*> terms_;
+  bool exact_area_, exact_volume_;
+  const SobolevPreconditioner& p_;
+  ShapeRelaxationWarmStart* kept_;
+  Eigen::VectorXd x0_, x_, grad3_;
+  Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
+  std::uint64_t evaluated_version_ = 0;
+  std::vector<Vec3> normals_, face_normal0_;
+  std::vector<char> fixed_;
+  MeshGeometry geometry_;
+  Eigen::MatrixXd rigid_;  // orthonormal rows fixing the rigid-body modes
+};
+
+}  // namespace cortex
