@@ -1,8 +1,9 @@
 #include "membrane/membrane.hpp"
 
-#include <stdexcept>
-
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -67,6 +68,19 @@ MeshGeometry Membrane::currentGeometry() const {
   MeshGeometry g;
   g.compute(topology_, flatten(mesh_.positions()).data());
   return g;
+}
+
+double Membrane::coatCoverage() const {
+  if (!coat_) return std::numeric_limits<double>::quiet_NaN();
+  const std::vector<int>& copies = species_copies_[coat_->species];
+  const MeshGeometry g = currentGeometry();
+  double weighted = 0.0, total = 0.0;
+  for (std::size_t v = 0; v < copies.size(); ++v) {
+    if (copies[v] == 0) continue;
+    weighted += copies[v] * std::min(copies[v] * coat_->area / g.vertex_area[v], 1.0);
+    total += copies[v];
+  }
+  return total > 0 ? weighted / total : std::numeric_limits<double>::quiet_NaN();
 }
 
 RemeshStats Membrane::remesh(const RemeshSettings& settings) {

@@ -141,6 +141,11 @@ class Membrane final : public Body {
   // The species whose copies change the bending energy, if any (ProteinCoat).
   const std::optional<ProteinCoat>& coat() const { return coat_; }
   void setCoat(std::optional<ProteinCoat> coat) { coat_ = coat; }
+  // The coat's mean coverage over its copies, Σ n_v φ_v / Σ n_v with φ_v = min(n_v a/A_v, 1)
+  // at the current positions; NaN without a coat or copies. Copies stay on their vertices
+  // while the relaxation moves them, so a relaxation that stretches coated cells thins
+  // the coat (docs/proteins.md): this measures by how much.
+  double coatCoverage() const;
   const std::vector<std::vector<int>>& speciesCopies() const { return species_copies_; }
   std::vector<int>& speciesCopies(Index species) { return species_copies_[species]; }
 

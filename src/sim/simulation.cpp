@@ -55,6 +55,10 @@ constexpr double kCollapsedAngleDeg = 0.1;
 // A relaxation ending with a force above this multiple of the tolerance did not find an
 // equilibrium: an error (exit 1). Below it, a warning counted in summary.json.
 constexpr double kFarFromTolerance = 100.0;
+// A relaxation may thin a coat by stretching its cells at most this much (relative): its
+// copies stay on the vertices instead of riding the lipid (docs/proteins.md), so beyond
+// this the coat's curvature generation is the mesh's artefact.
+constexpr double kLargestCoatThinning = 0.1;
 
 void Simulation::checkMeshes() const {
   for (const auto& m : system_.membranes()) {
@@ -236,6 +240,19 @@ void Simulation::checkRelaxation(const MinimizationResult& r) const {
                                r.stop_reason));
 }
 
+void Simulation::checkCoats(const std::vector<double>& coverage_before) const {
+  for (std::size_t i = 0; i < coverage_before.size(); ++i) {
+    const Membrane& m = *system_.membranes()[i];
+    const double after = m.coatCoverage();
+    if (after < (1.0 - kLargestCoatThinning) * coverage_before[i])
+      throw RunError(fmt::format(
+          "membrane \"{}\": the relaxation at t = {:.6g} s thinned the coat from a mean coverage of {:.3g} to {:.3g} by "
+          "stretching its cells (more than {:g}%): the copies stay on their vertices instead of moving with the lipid, "
+          "so this shape change is out of the model's reach (docs/proteins.md, curvature generation)",
+          m.name(), system_.time(), coverage_before[i], after, 100.0 * kLargestCoatThinning));
+  }
+}
+
 void Simulation::checkCrossings(const char* when) const {
   for (const MembraneBeadExclusion* term : system_.couplingTerms())
     if (const auto crossing = findMembraneCrossing(term->membrane(), term->network()))
@@ -255,7 +272,10 @@ MinimizationResult Simulation::relax() {
   if (system_.hasMechanics()) {
     const auto start = std::chrono::steady_clock::now();
     const double force_seconds = system_.forceField().forceSeconds();
+    std::vector<double> coverage;
+    for (const auto& m : system_.membranes()) coverage.push_back(m->coatCoverage());
     r = by_body ? relaxByBody() : relaxAll();
+    checkCoats(coverage);
     c.force_seconds += system_.forceField().forceSeconds() - force_seconds;
     ++c.minimizations;
     c.minimizer_iterations += r.iterations;

@@ -53,6 +53,9 @@ class Simulation {
   void checkCrossings(const char* when) const;
   // A relaxation that ended far from the tolerance is an error, not a warning.
   void checkRelaxation(const MinimizationResult& r) const;
+  // A relaxation that thinned a coat by stretching its cells is an error: the model keeps
+  // copies on vertices, not on the lipid (Membrane::coatCoverage, before the relaxation).
+  void checkCoats(const std::vector<double>& coverage_before) const;
   void remeshMembranes();
   void advanceChemistry(double t_end);
   bool crosses(double interval, std::int64_t k) const;
