@@ -1,7 +1,5 @@
 #include "membrane/bending_energy.hpp"
 
-#include <algorithm>
-
 #include "core/parallel.hpp"
 #include "membrane/curvature.hpp"
 #include "mesh/corner_gather.hpp"
@@ -47,13 +45,12 @@ double BendingEnergy::evaluate(const Evaluation& e) {
         meanCurvature(g.area_gradient[v], g.volume_gradient[v], estimator);
     double kappa = kappa_, dh = c.H - h0_, area_coefficient;
     if (coat && (*coat_copies)[v] > 0) {
-      const double raw = (*coat_copies)[v] * coat->area / g.vertex_area[v];
-      const double phi = std::min(raw, 1.0);
+      const double phi = coveredFraction((*coat_copies)[v], coat->area, g.vertex_area[v]);
       const CoatedLipid lipid = coatedLipid(kappa_, coat->bending_modulus, coat->spontaneous_curvature, dh, phi);
       kappa = lipid.kappa;
       dh = lipid.offset;
       // phi capped at 1 no longer follows A_v.
-      area_coefficient = lipid.density - (raw < 1.0 ? phi * lipid.derivative : 0.0);
+      area_coefficient = lipid.density - (phi < 1.0 ? phi * lipid.derivative : 0.0);
     } else {
       area_coefficient = 2.0 * kappa * dh * dh;
     }

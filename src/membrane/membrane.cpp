@@ -77,7 +77,7 @@ double Membrane::coatCoverage() const {
   double weighted = 0.0, total = 0.0;
   for (std::size_t v = 0; v < copies.size(); ++v) {
     if (copies[v] == 0) continue;
-    weighted += copies[v] * std::min(copies[v] * coat_->area / g.vertex_area[v], 1.0);
+    weighted += copies[v] * coveredFraction(copies[v], coat_->area, g.vertex_area[v]);
     total += copies[v];
   }
   return total > 0 ? weighted / total : std::numeric_limits<double>::quiet_NaN();

@@ -7,6 +7,8 @@
 // (sim/curvature_sensing.hpp): one formula for both directions of the coupling.
 #pragma once
 
+#include <algorithm>
+
 #include "core/types.hpp"
 
 namespace cortex {
@@ -19,6 +21,12 @@ struct ProteinCoat {
   double bending_modulus = 0.0;        // pN nm, κ_p
   double spontaneous_curvature = 0.0;  // 1/nm, H_p
 };
+
+// The area fraction n copies of area a cover on a cell of area A: φ = min(n a / A, 1) (a
+// cell cannot be more than covered).
+inline double coveredFraction(double copies, double copy_area, double cell_area) {
+  return std::min(copies * copy_area / cell_area, 1.0);
+}
 
 struct CoatedLipid {
   double kappa;       // κ(φ), pN nm

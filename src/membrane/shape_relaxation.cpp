@@ -259,9 +259,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     Eigen::VectorXd g;
     rep.energy = problem.valueAndGradient(u, g);
     ++rep.force_evaluations;
-    MeshGeometry geo;
-    const Eigen::VectorXd x = flatPositions(m.mesh());
-    geo.compute(m.topology(), x.data());
+    const MeshGeometry geo = m.currentGeometry();
     // The multipliers of the last iterate (the minimizer's, in the Sobolev metric), else
     // least squares on the normal components.
     const int nc = int(exact_area) + int(exact_volume);
