@@ -79,7 +79,7 @@ std::function<std::vector<Fixture>()> onMembranes(MembraneTermFactory make, bool
         auto membrane = std::make_shared<Membrane>("m", mesh, stressed(estimator, mesh), std::vector<char>{});
         membrane->setOffset(kMembraneOffset);
         std::vector<double> x(3 * kMembraneOffset, 1.0);
-        const std::vector<double> own = testing::flatPositions(mesh);
+        const std::vector<double> own = flatCoordinates(mesh.positions());
         x.insert(x.end(), own.begin(), own.end());
         // Step 1e-4 nm on coordinates of O(100 nm): truncation ~h^2, round-off ~1e-16 E/h,
         // both far below the 1e-6 tolerance.
@@ -158,7 +158,7 @@ std::function<std::vector<Fixture>()> onMembraneAndFilaments(CouplingTermFactory
       owned->membrane->setOffset(kMembraneOffset);
       owned->network->setOffset(kMembraneOffset + owned->membrane->numPoints());
       std::vector<double> x(3 * kMembraneOffset, 1.0);
-      const std::vector<double> own = testing::flatPositions(mesh);
+      const std::vector<double> own = flatCoordinates(mesh.positions());
       x.insert(x.end(), own.begin(), own.end());
       std::vector<double> beads(3 * owned->network->numPoints());
       owned->network->gather(beads.data());

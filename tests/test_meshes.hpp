@@ -55,10 +55,4 @@ inline double curvatureRoughness(const SurfaceMesh& mesh, const std::vector<doub
   return worst / mean_abs;
 }
 
-inline std::vector<double> flatPositions(const SurfaceMesh& m) {
-  std::vector<double> x;
-  for (const Vec3& p : m.positions()) x.insert(x.end(), {p.x(), p.y(), p.z()});
-  return x;
-}
-
 }  // namespace cortex::testing

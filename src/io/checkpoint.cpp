@@ -60,13 +60,6 @@ struct AttributeReader {
   }
 };
 
-std::vector<double> flatten(const std::vector<Vec3>& p) {
-  std::vector<double> x;
-  x.reserve(3 * p.size());
-  for (const Vec3& v : p) x.insert(x.end(), {v.x(), v.y(), v.z()});
-  return x;
-}
-
 // Body names joined by '/', which no name may contain.
 std::string joinNames(const std::vector<std::string>& names) {
   std::string out;
@@ -86,7 +79,7 @@ std::vector<std::string> splitNames(const std::string& joined) {
 
 void writeMembrane(h5::File& f, const std::string& g, const MembraneState& s) {
   const auto n = static_cast<hsize_t>(s.mesh.positions.size());
-  f.write(g + "/vertices", flatten(s.mesh.positions), {n, 3});
+  f.write(g + "/vertices", flatCoordinates(s.mesh.positions), {n, 3});
   std::vector<std::int32_t> tris;
   for (const Tri& t : s.mesh.triangles) tris.insert(tris.end(), t.begin(), t.end());
   f.write(g + "/triangles", tris, {tris.size() / 3, 3});

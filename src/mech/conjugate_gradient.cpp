@@ -17,7 +17,7 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
   MinimizationResult r;
   bool restarted = true;
   for (r.iterations = 0; r.iterations < s.max_iterations; ++r.iterations) {
-    r.max_force = maxAbs(g);
+    r.max_force = maxPointForce(g);
     if (r.max_force <= s.force_tolerance) {
       r.converged = true;
       break;
@@ -54,7 +54,7 @@ MinimizationResult conjugateGradient(Objective& f, Eigen::VectorXd& x, const Min
   }
   if (!r.converged && r.stop_reason.empty()) r.stop_reason = "maximum iterations reached";
   r.energy = energy;
-  r.max_force = maxAbs(g);
+  r.max_force = maxPointForce(g);
   return r;
 }
 

@@ -40,7 +40,7 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
   const LineSearchParams params{1e-4, 0.9, 40};
   MinimizationResult r;
   for (r.iterations = 0; r.iterations < s.max_iterations; ++r.iterations) {
-    r.max_force = maxAbs(g);
+    r.max_force = maxPointForce(g);
     if (r.max_force <= s.force_tolerance) {
       r.converged = true;
       break;
@@ -79,7 +79,7 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
   }
   if (!r.converged && r.stop_reason.empty()) r.stop_reason = "maximum iterations reached";
   r.energy = energy;
-  r.max_force = maxAbs(g);
+  r.max_force = maxPointForce(g);
   return r;
 }
 

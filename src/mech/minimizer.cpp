@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/error.hpp"
 
@@ -20,6 +21,15 @@ namespace detail {
 double maxAbs(const Eigen::VectorXd& v) {
   if (!v.allFinite()) return std::numeric_limits<double>::infinity();
   return v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
+}
+
+double maxPointForce(const Eigen::VectorXd& g) {
+  if (g.size() % 3 != 0)
+    throw std::invalid_argument(fmt::format("a gradient of {} entries is not x, y, z per point", g.size()));
+  if (!g.allFinite()) return std::numeric_limits<double>::infinity();
+  const Eigen::Index points = g.size() / 3;
+  const auto triples = Eigen::Map<const Eigen::Matrix3Xd>(g.data(), 3, points);
+  return points ? triples.colwise().norm().maxCoeff() : 0.0;
 }
 
 void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* where) {

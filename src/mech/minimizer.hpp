@@ -25,7 +25,7 @@ using MinimizerProgressCallback = std::function<void(const MinimizerProgress&)>;
 
 struct MinimizerSettings {
   MinimizerKind kind = MinimizerKind::kAuto;
-  double force_tolerance = 0.1;  // pN: converged when every |dE/dx_i| is below it
+  double force_tolerance = 0.1;  // pN: converged when the force on every point is below it
   // Whether the config gave force_tolerance: if not, membranes under kAuto converge on
   // their own force scale instead (membrane/shape_relaxation.hpp).
   bool force_tolerance_given = false;
@@ -39,7 +39,7 @@ struct MinimizationResult {
   bool converged = false;
   long iterations = 0;
   double energy = 0.0;
-  double max_force = 0.0;  // pN
+  double max_force = 0.0;  // pN, largest force on one point (maxPointForce)
   std::string stop_reason;
 };
 
@@ -58,6 +58,11 @@ void checkBounded(double energy, const Eigen::VectorXd& x, const Eigen::VectorXd
 // Largest magnitude (0 for an empty vector); infinity when any entry is not finite:
 // Eigen's maxCoeff may skip a NaN, and a residual of NaN must not pass for converged.
 double maxAbs(const Eigen::VectorXd& v);
+// Largest force on one point, |(g_3i, g_3i+1, g_3i+2)| over the points i of a gradient
+// laid out x y z per point (every Objective here is): unlike the largest component it does
+// not depend on how the axes are oriented, so a rotated system converges alike. Infinity
+// when any entry is not finite.
+double maxPointForce(const Eigen::VectorXd& g);
 }  // namespace detail
 
 }  // namespace cortex

@@ -14,14 +14,6 @@ double sphereVolumeOfArea(double area) {
   return std::pow(area, 1.5) / (6.0 * std::sqrt(constants::kPi));
 }
 
-namespace {
-std::vector<double> flatten(const std::vector<Vec3>& p) {
-  std::vector<double> x(3 * p.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (int k = 0; k < 3; ++k) x[3 * i + k] = p[i][k];
-  return x;
-}
-}  // namespace
 
 Membrane::Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechanics,
                    std::vector<char> fixed_vertices, const std::string& where)
@@ -66,7 +58,7 @@ double Membrane::targetVolume(double t) const {
 
 MeshGeometry Membrane::currentGeometry() const {
   MeshGeometry g;
-  g.compute(topology_, flatten(mesh_.positions()).data());
+  g.compute(topology_, flatCoordinates(mesh_.positions()).data());
   return g;
 }
 

@@ -7,12 +7,6 @@
 
 namespace cortex {
 
-Eigen::VectorXd flatPositions(const SurfaceMesh& mesh) {
-  Eigen::VectorXd x(3 * mesh.numVertices());
-  for (Index v = 0; v < mesh.numVertices(); ++v) x.segment<3>(3 * v) = mesh.positions()[v];
-  return x;
-}
-
 NormalDisplacementProblem::NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
                           bool exact_volume, const SobolevPreconditioner& p,
                           ShapeRelaxationWarmStart* kept_columns)
@@ -23,7 +17,8 @@ NormalDisplacementProblem::NormalDisplacementProblem(Membrane& m, ForceField& fi
       exact_volume_(exact_volume),
       p_(p),
       kept_(kept_columns) {
-  x0_ = flatPositions(m.mesh());
+  const std::vector<double> x0 = flatCoordinates(m.mesh().positions());
+  x0_ = Eigen::Map<const Eigen::VectorXd>(x0.data(), static_cast<Eigen::Index>(x0.size()));
   normals_ = vertexNormals(m.mesh());
   fixed_ = m.fixedVertices();
   const Index nf = m.topology().numFaces();

@@ -17,9 +17,6 @@
 
 namespace cortex {
 
-// The mesh's positions as one vector (x, y, z per vertex).
-Eigen::VectorXd flatPositions(const SurfaceMesh& mesh);
-
 class NormalDisplacementProblem final : public ConstrainedProblem {
  public:
   // `kept_columns`: where P^-1 of the rigid rows is kept between outer steps (optional).

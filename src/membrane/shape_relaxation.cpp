@@ -131,7 +131,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   double continuation = 1.0;  // fraction of the way from the current area and volume to the targets
   for (rep.outer = 0; rep.outer < kMaxOuter; ++rep.outer) {
     const Index n = m.mesh().numVertices();
-    const Eigen::VectorXd x0 = flatPositions(m.mesh());
+    const std::vector<double> x0 = flatCoordinates(m.mesh().positions());
     MeshGeometry geo0;
     geo0.compute(m.topology(), x0.data());
     const double radius = std::sqrt(geo0.area / (4.0 * constants::kPi));
@@ -302,7 +302,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
         rep.stop_reason = fmt::format("the forces on vertex {} are not finite", v);
         break;
       }
-      rep.max_force = std::max(rep.max_force, f.cwiseAbs().maxCoeff());
+      rep.max_force = std::max(rep.max_force, f.norm());
       rep.max_normal_force = std::max(rep.max_normal_force, std::abs(normals[v].dot(f)));
     }
     rep.area_held = exact_area;

@@ -93,7 +93,7 @@ struct ShapeRelaxationReport {
   double force_tolerance = 0.0;   // pN, the one used
   double energy = 0.0;            // pN·nm, the membrane's terms
   double max_normal_force = 0.0;  // pN, the converged quantity
-  double max_force = 0.0;         // pN, largest component of ∇E − λ·∇c, tangential included
+  double max_force = 0.0;         // pN, largest |∇E − λ·∇c| on one vertex, tangential included
   bool area_held = false, volume_held = false;   // which constraints were exact
   double area_error = 0.0, volume_error = 0.0;  // relative to the targets (held ones only)
   Index vertices = 0;

@@ -29,7 +29,7 @@ constexpr double kRadius = 300.0;                                       // nm
 
 double energy(Membrane& m) {
   BendingEnergy term(m, m.mechanics().bending);
-  const std::vector<double> x = testing::flatPositions(m.mesh());
+  const std::vector<double> x = flatCoordinates(m.mesh().positions());
   return term.evaluate({x.data(), nullptr, 1});
 }
 

@@ -266,7 +266,7 @@ RandomShape randomSmoothShape(std::uint64_t seed) {
     mesh.positions()[v] = r_ellipsoid * std::exp(amplitude * (f[static_cast<std::size_t>(v)] - mean) / sd) * u;
   }
   MeshGeometry g;
-  const std::vector<double> x = testing::flatPositions(mesh);
+  const std::vector<double> x = flatCoordinates(mesh.positions());
   g.compute(MeshTopology::of(mesh), x.data());
   const double scale = std::sqrt(4.0 * kPi * 1e6 / g.area);
   for (Vec3& p : mesh.positions()) p *= scale;
@@ -275,7 +275,7 @@ RandomShape randomSmoothShape(std::uint64_t seed) {
 
 double reducedVolume(const SurfaceMesh& mesh) {
   MeshGeometry g;
-  const std::vector<double> x = testing::flatPositions(mesh);
+  const std::vector<double> x = flatCoordinates(mesh.positions());
   g.compute(MeshTopology::of(mesh), x.data());
   return 6.0 * std::sqrt(kPi) * g.volume / std::pow(g.area, 1.5);
 }

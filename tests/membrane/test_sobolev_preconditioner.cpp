@@ -14,7 +14,7 @@ using constants::kPi;
 
 struct Fixture {
   SurfaceMesh mesh = testing::sphereMesh(500.0, 3, 0.1);
-  std::vector<double> x = testing::flatPositions(mesh);
+  std::vector<double> x = flatCoordinates(mesh.positions());
   ScalarMeshOperators ops = scalarMeshOperators(x.data(), mesh.numVertices(), mesh.triangles());
   double kappa = 100.0, eps = 20.0 / (500.0 * 500.0);
 

@@ -20,7 +20,7 @@ const double k8PiKappa = 8.0 * constants::kPi * kKappa;
 double bendingEnergy(const SurfaceMesh& mesh, CurvatureEstimator estimator) {
   Membrane membrane("sphere", mesh, {}, {});
   BendingEnergy term(membrane, {Schedule(kKappa), Schedule(0.0), estimator});
-  const std::vector<double> x = testing::flatPositions(mesh);
+  const std::vector<double> x = flatCoordinates(mesh.positions());
   return term.evaluate({x.data(), nullptr, 1});
 }
 
@@ -94,7 +94,7 @@ TEST(FlatBending, AnExactlyFlatPatchHasZeroFiniteForcesWithEitherEstimator) {
   Membrane membrane("patch", mesh, {}, {});
   for (auto estimator : {CurvatureEstimator::kSigned, CurvatureEstimator::kUnsigned}) {
     BendingEnergy term(membrane, {Schedule(100.0), Schedule(0.0), estimator});
-    const std::vector<double> x = testing::flatPositions(mesh);
+    const std::vector<double> x = flatCoordinates(mesh.positions());
     std::vector<double> g(x.size(), 0.0);
     EXPECT_EQ(term.evaluate({x.data(), g.data(), 1}), 0.0);
     for (double v : g) {

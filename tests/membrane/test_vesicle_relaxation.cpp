@@ -72,7 +72,7 @@ TEST(SpontaneousCurvature, SphereEnergyFollowsTheClosedForm) {
     p.spontaneous_curvature = Schedule(rh0 / R);
     Membrane membrane("s", mesh, {}, {});
     BendingEnergy term(membrane, p);
-    const std::vector<double> x = testing::flatPositions(mesh);
+    const std::vector<double> x = flatCoordinates(mesh.positions());
     const double exact = 8 * kPi * kappa * (1 - rh0) * (1 - rh0);
     // Absolute floor: at R H0 = 1 the exact energy is 0 and the discrete one is the
     // discretization error, O(1e-4) of 8 pi kappa on a 10k-vertex icosphere.

@@ -18,7 +18,7 @@ using constants::kPi;
 
 MeshGeometry geometryOf(const SurfaceMesh& m) {
   MeshGeometry g;
-  g.compute(MeshTopology::of(m), testing::flatPositions(m).data());
+  g.compute(MeshTopology::of(m), flatCoordinates(m.positions()).data());
   return g;
 }
 
@@ -145,8 +145,8 @@ TEST(Geometry, AreaAndVolumeAloneEqualTheFullComputationBitForBit) {
     const SurfaceMesh m = testing::sphereMesh(100.0, 3, jitter, Vec3(300, -200, 50));
     const MeshGeometry g = geometryOf(m);
     const MeshTopology topology = MeshTopology::of(m);
-    EXPECT_EQ(totalArea(topology, testing::flatPositions(m).data()), g.area) << "jitter " << jitter;
-    EXPECT_EQ(signedVolume(topology, testing::flatPositions(m).data()), g.volume) << "jitter " << jitter;
+    EXPECT_EQ(totalArea(topology, flatCoordinates(m.positions()).data()), g.area) << "jitter " << jitter;
+    EXPECT_EQ(signedVolume(topology, flatCoordinates(m.positions()).data()), g.volume) << "jitter " << jitter;
   }
 }
 

@@ -19,7 +19,7 @@ namespace {
 
 double volumeOf(const SurfaceMesh& m) {
   MeshGeometry g;
-  g.compute(MeshTopology::of(m), testing::flatPositions(m).data());
+  g.compute(MeshTopology::of(m), flatCoordinates(m.positions()).data());
   return g.volume;
 }
 
