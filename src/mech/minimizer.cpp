@@ -29,7 +29,7 @@ double maxPointForce(const Eigen::VectorXd& g) {
   if (!g.allFinite()) return std::numeric_limits<double>::infinity();
   const Eigen::Index points = g.size() / 3;
   const auto triples = Eigen::Map<const Eigen::Matrix3Xd>(g.data(), 3, points);
-  return points ? triples.colwise().norm().maxCoeff() : 0.0;
+  return points ? std::sqrt(triples.colwise().squaredNorm().maxCoeff()) : 0.0;
 }
 
 void checkFinite(double energy, const Eigen::VectorXd& gradient, const char* where) {
