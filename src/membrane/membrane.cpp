@@ -14,7 +14,6 @@ double sphereVolumeOfArea(double area) {
   return std::pow(area, 1.5) / (6.0 * std::sqrt(constants::kPi));
 }
 
-
 Membrane::Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechanics,
                    std::vector<char> fixed_vertices, const std::string& where)
     : name_(std::move(name)),

@@ -33,13 +33,18 @@ class IllConditionedQuadratic final : public Objective {
   std::vector<double> c_;
 };
 
-// Extended Rosenbrock: minimum 0 at x = (1, ..., 1), a curved narrow valley.
-class Rosenbrock final : public Objective {
+// value() through valueAndGradient(), for test functions whose gradient is cheap.
+class ValueFromGradient : public Objective {
  public:
-  double value(const Eigen::VectorXd& x) override {
+  double value(const Eigen::VectorXd& x) final {
     Eigen::VectorXd g;
     return valueAndGradient(x, g);
   }
+};
+
+// Extended Rosenbrock: minimum 0 at x = (1, ..., 1), a curved narrow valley.
+class Rosenbrock final : public ValueFromGradient {
+ public:
   double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
     g.setZero(x.size());
     double f = 0;
@@ -129,15 +134,11 @@ TEST_P(Minimizers, StopAtMaxIterationsWithoutConverging) {
 // Springs pulling each of 40 points towards its own anchor with a stiffness that differs
 // per point and per axis, seen in a rotated frame: the minimizer stops when the force on
 // every point, a 3-vector, is below the tolerance, whatever the axes.
-class RotatedAnisotropicSprings final : public Objective {
+class RotatedAnisotropicSprings final : public ValueFromGradient {
  public:
   explicit RotatedAnisotropicSprings(const Eigen::Matrix3d& rotation) : r_(rotation), k_(3, 40), a_(3, 40) {
     for (int p = 0; p < 40; ++p)
       for (int d = 0; d < 3; ++d) k_(d, p) = std::pow(30.0, ((p * 7 + d * 13) % 40) / 39.0), a_(d, p) = p + 0.5 * d;
-  }
-  double value(const Eigen::VectorXd& x) override {
-    Eigen::VectorXd g;
-    return valueAndGradient(x, g);
   }
   double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
     g.resize(x.size());
