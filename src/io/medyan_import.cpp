@@ -123,10 +123,11 @@ void Translator::minimizer() {
   if (const auto g = value("GRADIENTTOLERANCE")) {
     // Kept as given, so the run is MEDYAN's; but near 1 pN a soft network is not relaxed
     // and what binds depends on the value (docs/medyan.md): say so where users look.
-    toml_ << "force_tolerance = " << num(*g) << "  # pN; results of soft networks depend on it (docs/medyan.md)\n";
+    toml_ << "force_tolerance = " << num(*g)
+          << "  # pN on each bead's force; results of soft networks depend on it (docs/medyan.md)\n";
     done(whereOf("GRADIENTTOLERANCE"),
-         fmt::format("GRADIENTTOLERANCE -> mechanics.force_tolerance = {} pN (what a soft network binds depends on "
-                     "it; docs/medyan.md)",
+         fmt::format("GRADIENTTOLERANCE -> mechanics.force_tolerance = {} pN, a bound on each bead's force vector "
+                     "(what a soft network binds depends on it; docs/medyan.md)",
                      *g));
   }
   if (const auto d = value("MAXDISTANCE")) {
