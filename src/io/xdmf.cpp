@@ -127,7 +127,8 @@ void appendFilamentGrid(std::string& xml, const XdmfSnapshot& snapshot, Filament
   const auto binders = [&](const char* kind, std::int64_t n) {
     appendSegmentGrid(xml, {n, 2 * n, data + kind + "_cells", data + kind + "s",
                             {{"type", data + kind + "_types", "Int", "4"},
-                             {"tension", data + kind + "_tensions", "Float", "8"}}});
+                             {"tension", data + kind + "_tensions", "Float", "8"}},
+                            {}});
   };
   switch (part) {
     case FilamentPart::kCylinders:

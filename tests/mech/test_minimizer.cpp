@@ -158,7 +158,7 @@ class RotatedAnisotropicSprings final : public ValueFromGradient {
 
 TEST_P(Minimizers, ConvergeOnTheForceOnEachPointInAnyFrame) {
   const double tol = 1e-3;
-  for (const Eigen::Matrix3d rotation :
+  for (const Eigen::Matrix3d& rotation :
        {Eigen::Matrix3d::Identity().eval(),
         Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix()}) {
     RotatedAnisotropicSprings f(rotation);
