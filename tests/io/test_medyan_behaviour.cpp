@@ -25,10 +25,11 @@ struct Means {
 
 Means runImportedExample(int seeds) {
   const auto dir = cli_test::sourceDir() / "examples/medyan/50filaments_motor_linker";
-  const MedyanImport imported = importMedyan(dir / "systeminput.txt", std::nullopt);
+  const Config imported =
+      parseConfig(importMedyan(dir / "systeminput.txt", std::nullopt).toml, "imported.toml", dir, {});
   Means m;
   for (int seed = 1; seed <= seeds; ++seed) {
-    Config c = parseConfig(imported.toml, "imported.toml", dir, {});
+    Config c = imported;
     c.simulation.seed = seed;
     System system(c);
     RunObserver quiet;
