@@ -22,6 +22,7 @@ enum class StreamId : std::uint64_t {
   kInitialConditions = 2,
   kFilamentPlacement = 3,
   kSurfaceSpeciesPlacement = 4,
+  kCopyTransport = 5,
 };
 
 class RandomStream {
@@ -36,6 +37,16 @@ class RandomStream {
     return (static_cast<double>(bits) + 0.5) * 0x1.0p-53;
   }
   double exponential(double rate) { return -std::log(uniform()) / rate; }
+
+  // Raw 64-bit draws: a uniform random bit generator for the standard distributions
+  // (whose algorithms are the standard library's: same build, same numbers).
+  using result_type = std::uint64_t;
+  static constexpr result_type min() { return 0; }
+  static constexpr result_type max() { return ~result_type{0}; }
+  result_type operator()() {
+    if (used_ == 4) refill();
+    return block_[used_++];
+  }
 
   // Position in the stream, for checkpoints: blocks of four numbers drawn so far, plus
   // how many of the current block are used.

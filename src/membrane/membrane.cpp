@@ -92,6 +92,15 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   return stats;
 }
 
+Index Membrane::relocateVertices() {
+  std::vector<std::vector<int>*> counts;
+  for (std::vector<int>& c : species_copies_) counts.push_back(&c);
+  CopyCarrier carrier = CopyCarrier::keyedByState(mesh_, std::move(counts));
+  const Index moved = relocateTangentially(mesh_, &fixed_, &carrier);
+  cache_valid_ = false;
+  return moved;
+}
+
 void Membrane::setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies) {
   if (names.size() != copies.size()) throw std::invalid_argument("membrane species: one copy array per name");
   for (const std::vector<int>& c : copies) {

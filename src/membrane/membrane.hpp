@@ -120,10 +120,13 @@ class Membrane final : public Body {
   const MembraneEquilibrium& equilibrium() const { return equilibrium_; }
   void setEquilibrium(const MembraneEquilibrium& e) { equilibrium_ = e; }
 
-  // Remeshes (remesh.hpp), carrying fixed flags and material areas along, and
-  // accumulates the operation counts. Connectivity and vertex count change: the caller
-  // must lay out the coordinates again (System::layOut).
+  // Remeshes (remesh.hpp), carrying fixed flags, material areas and species copies
+  // along, and accumulates the operation counts. Connectivity and vertex count change:
+  // the caller must lay out the coordinates again (System::layOut).
   RemeshStats remesh(const RemeshSettings& settings);
+  // One tangential relocation sweep (relocateTangentially), the species copies following
+  // the cells. Returns how many vertices moved.
+  Index relocateVertices();
   // Remeshing after every minimization, if set (config remesh = true).
   const std::optional<RemeshSettings>& remeshing() const { return remeshing_; }
   void setRemeshing(std::optional<RemeshSettings> settings) { remeshing_ = std::move(settings); }

@@ -245,7 +245,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       moved_since_remesh = 0.0;
       memory.clear();
     } else {
-      relocateTangentially(m.mesh(), &m.fixedVertices());
+      m.relocateVertices();
     }
   }
   if (!rep.converged && rep.stop_reason.empty()) rep.stop_reason = "maximum outer steps or iterations reached";

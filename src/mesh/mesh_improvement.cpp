@@ -44,7 +44,7 @@ bool mayFlip(const SurfaceMesh& m, Index h, const std::vector<int>& val) {
 // One sweep over the interior edges: flips edge a-b of triangles (a,b,c), (b,a,d) into
 // c-d wherever wanted(a, b, c, d, valences) says so and the flipped pair does not fold.
 template <class Wanted>
-Index flipWhere(SurfaceMesh& m, Wanted wanted) {
+Index flipWhere(SurfaceMesh& m, Wanted wanted, const FlipObserver& on_flip) {
   Index flips = 0;
   const auto& p = m.positions();
   std::vector<int> val = valences(m);
@@ -55,13 +55,14 @@ Index flipWhere(SurfaceMesh& m, Wanted wanted) {
     if (!wanted(a, b, c, d, val) || !flipKeepsOrientation(p, a, b, c, d) || !m.flip(h)) continue;
     --val[a], --val[b], ++val[c], ++val[d];
     ++flips;
+    if (on_flip) on_flip(a, b, c, d);
   }
   return flips;
 }
 
 }  // namespace
 
-Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
+Index equalizeValences(SurfaceMesh& m, bool keep_delaunay, const FlipObserver& on_flip) {
   const auto& p = m.positions();
   return flipWhere(m, [&](Index a, Index b, Index c, Index d, const std::vector<int>& val) {
     auto deviation = [&](int da, int db, int dc, int dd) {
@@ -72,14 +73,14 @@ Index equalizeValences(SurfaceMesh& m, bool keep_delaunay) {
     // With keep_delaunay the new edge c-d must itself be Delaunay, or a Delaunay sweep
     // would undo the flip.
     return deviation(-1, -1, 1, 1) < deviation(0, 0, 0, 0) && (!keep_delaunay || isDelaunay(p[c], p[d], p[a], p[b]));
-  });
+  }, on_flip);
 }
 
-Index flipToDelaunay(SurfaceMesh& m) {
+Index flipToDelaunay(SurfaceMesh& m, const FlipObserver& on_flip) {
   const auto& p = m.positions();
   return flipWhere(m, [&](Index a, Index b, Index c, Index d, const std::vector<int>&) {
     return !isDelaunay(p[a], p[b], p[c], p[d]);
-  });
+  }, on_flip);
 }
 
 void smoothTangentially(SurfaceMesh& m, const SurfaceProjector& project, double step) {

@@ -14,17 +14,19 @@
 namespace cortex {
 
 using SurfaceProjector = std::function<Vec3(const Vec3&)>;
+// Told of every flip done: edge a-b of triangles (a,b,c), (b,a,d) became c-d.
+using FlipObserver = std::function<void(Index a, Index b, Index c, Index d)>;
 
 // One sweep of valence-improving flips over all interior edges. Flips that would fold
 // a triangle over (normals of the new pair disagreeing with the old pair) are refused,
 // and so, with keep_delaunay, are flips whose new edge would not be Delaunay (so that
 // valence and Delaunay sweeps do not undo each other). Returns the number of flips.
-Index equalizeValences(SurfaceMesh& mesh, bool keep_delaunay = false);
+Index equalizeValences(SurfaceMesh& mesh, bool keep_delaunay = false, const FlipObserver& on_flip = {});
 
 // One sweep of Delaunay flips: an interior edge whose two opposite angles sum to more
 // than pi is flipped (which raises the smallest angle of the pair), unless the flip
 // would fold the surface. Returns the number of flips.
-Index flipToDelaunay(SurfaceMesh& mesh);
+Index flipToDelaunay(SurfaceMesh& mesh, const FlipObserver& on_flip = {});
 
 // Moves every non-boundary vertex towards the centroid of its neighbours within its
 // tangent plane, then onto the surface. `step` in (0, 1] is the fraction moved.

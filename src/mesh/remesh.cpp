@@ -6,6 +6,7 @@
 
 #include "core/parallel.hpp"
 
+#include "mesh/copy_carrier.hpp"
 #include "mesh/mesh_improvement.hpp"
 #include "mesh/vertex_normals.hpp"
 
@@ -51,7 +52,19 @@ bool keepsOrientation(const SurfaceMesh& m, Index v, const Vec3& to, Index skip)
 
 double edgeTarget(const std::vector<double>& target, Index a, Index b) { return 0.5 * (target[a] + target[b]); }
 
-Index splitLongEdges(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payload) {
+// The triangles on either side of half-edge h, with their areas.
+std::vector<FaceArea> facesBeside(const SurfaceMesh& m, Index h) {
+  std::vector<FaceArea> faces;
+  const auto& p = m.positions();
+  for (const Index side : {h, m.twin(h)}) {
+    if (m.isBoundaryHalfedge(side)) continue;
+    const Tri t = m.faceVertices(m.face(side));
+    faces.push_back({t, triangleArea(p[t[0]], p[t[1]], p[t[2]])});
+  }
+  return faces;
+}
+
+Index splitLongEdges(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payload, CopyCarrier& carrier) {
   std::vector<Vec3> normals = vertexNormals(m);
   Index splits = 0;
   // Only the edges present at the start: a sweep at most halves an edge, so one bad
@@ -65,17 +78,18 @@ Index splitLongEdges(SurfaceMesh& m, std::vector<double>& target, VertexPayload&
     if ((pb - pa).norm() <= kSplitAbove * edgeTarget(target, a, b)) continue;
     const bool on_boundary = m.isBoundaryHalfedge(h) || m.isBoundaryHalfedge(t);
     const Vec3 x = on_boundary ? Vec3(0.5 * (pa + pb)) : smoothMidpoint(pa, pb, normals[a], normals[b]);
-    m.split(h, x);
+    const std::vector<FaceArea> before = carrier.active() ? facesBeside(m, h) : std::vector<FaceArea>{};
+    const Index added = m.split(h, x);
     ++splits;
     normals.push_back((normals[a] + normals[b]).normalized());
     target.push_back(edgeTarget(target, a, b));
     if (payload.fixed) payload.fixed->push_back(isFixed(payload, a) && isFixed(payload, b) && on_boundary);
-    for (std::vector<int>* c : payload.counts) {
-      const int from_a = (*c)[a] / 4, from_b = (*c)[b] / 4;
-      (*c)[a] -= from_a, (*c)[b] -= from_b;
-      c->push_back(from_a + from_b);
-    }
     for (std::vector<double>* e : payload.extensive) e->push_back(0.0);
+    for (std::vector<int>* c : payload.counts) c->push_back(0);
+    if (carrier.active()) {
+      carrier.addVertex();
+      carrier.replaced(before, facesAround(m, added));
+    }
   }
   return splits;
 }
@@ -89,7 +103,21 @@ bool collapseWouldBeHealthy(const SurfaceMesh& m, Index a, Index b, const std::v
   return keepsOrientation(m, a, p[b], b);
 }
 
-Index collapseShortEdges(SurfaceMesh& m, const std::vector<double>& target, VertexPayload& payload) {
+// The triangles around a once a has merged into b: those not on edge a-b, with b for a.
+std::vector<FaceArea> facesAfterCollapse(const SurfaceMesh& m, const std::vector<FaceArea>& around_a, Index b) {
+  std::vector<FaceArea> faces;
+  const auto& p = m.positions();
+  for (FaceArea f : around_a) {
+    if (std::find(f.vertices.begin(), f.vertices.end(), b) != f.vertices.end()) continue;
+    f.vertices[0] = b;  // facesAround puts the centre first
+    f.area = triangleArea(p[b], p[f.vertices[1]], p[f.vertices[2]]);
+    faces.push_back(f);
+  }
+  return faces;
+}
+
+Index collapseShortEdges(SurfaceMesh& m, const std::vector<double>& target, VertexPayload& payload,
+                         CopyCarrier& carrier) {
   Index collapses = 0;
   for (Index h = 0; h < m.numHalfedges(); ++h) {
     if (m.isDeletedHalfedge(h)) continue;
@@ -97,9 +125,10 @@ Index collapseShortEdges(SurfaceMesh& m, const std::vector<double>& target, Vert
     if (isFixed(payload, a)) continue;
     if ((m.positions()[b] - m.positions()[a]).norm() >= kCollapseBelow * edgeTarget(target, a, b)) continue;
     if (!m.isCollapsible(h) || !collapseWouldBeHealthy(m, a, b, target)) continue;
+    const std::vector<FaceArea> before = carrier.active() ? facesAround(m, a) : std::vector<FaceArea>{};
     m.collapse(h);
     ++collapses;
-    for (std::vector<int>* c : payload.counts) (*c)[b] += (*c)[a], (*c)[a] = 0;
+    carrier.replaced(before, facesAfterCollapse(m, before, b));
     for (std::vector<double>* e : payload.extensive) (*e)[b] += (*e)[a], (*e)[a] = 0.0;
   }
   return collapses;
@@ -137,13 +166,31 @@ void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
   }
 }
 
+// A Jacobi sweep moves every vertex at once. The copies follow the same moves made one
+// vertex at a time in index order (so the draws do not depend on the thread count): the
+// cells' changes, each move seeing the earlier ones, add up to the sweep's exactly.
+void carryThroughMoves(const SurfaceMesh& m, const std::vector<Vec3>& moved, const std::vector<char>& did_move,
+                       CopyCarrier& carrier) {
+  std::vector<Vec3> p = m.positions();
+  auto areasAround = [&](std::vector<FaceArea> faces) {
+    for (FaceArea& f : faces) f.area = triangleArea(p[f.vertices[0]], p[f.vertices[1]], p[f.vertices[2]]);
+    return faces;
+  };
+  for (Index v = 0; v < m.numVertices(); ++v) {
+    if (!did_move[v]) continue;
+    const std::vector<FaceArea> before = areasAround(facesAround(m, v));
+    p[v] = moved[v];
+    carrier.replaced(before, areasAround(before));
+  }
+}
+
 }  // namespace
 
 // Moves vertices towards the area-weighted centroid of their 1-ring, within the
 // tangent plane, where that does not fold a triangle. All targets are computed from the
 // old positions (Jacobi), so vertices are independent and the loop runs in parallel
 // with a result that does not depend on the thread count.
-Index relocateTangentially(SurfaceMesh& m, const std::vector<char>* fixed) {
+Index relocateTangentially(SurfaceMesh& m, const std::vector<char>* fixed, CopyCarrier* carrier) {
   const std::vector<Vec3> normals = vertexNormals(m);
   const auto& p = m.positions();
   std::vector<Vec3> moved = p;
@@ -166,6 +213,7 @@ Index relocateTangentially(SurfaceMesh& m, const std::vector<char>* fixed) {
     moved[v] = to;
     did_move[v] = 1;
   });
+  if (carrier && carrier->active()) carryThroughMoves(m, moved, did_move, *carrier);
   m.positions().swap(moved);
   return static_cast<Index>(std::count(did_move.begin(), did_move.end(), 1));
 }
@@ -174,12 +222,23 @@ RemeshStats remesh(SurfaceMesh& m, VertexPayload& payload, const RemeshSettings&
   RemeshStats stats;
   // Sizing comes from the shape as the pass found it; splits and collapses carry it along.
   std::vector<double> target = sizingField(m, settings.sizing);
+  CopyCarrier carrier = CopyCarrier::keyedByState(m, payload.counts);
+  const FlipObserver carry_through_flip = [&](Index a, Index b, Index c, Index d) {
+    const auto& p = m.positions();
+    const FaceArea before[2] = {{{a, b, c}, triangleArea(p[a], p[b], p[c])}, {{b, a, d}, triangleArea(p[b], p[a], p[d])}};
+    const FaceArea after[2] = {{{c, d, b}, triangleArea(p[c], p[d], p[b])}, {{d, c, a}, triangleArea(p[d], p[c], p[a])}};
+    carrier.replaced(before, after);
+  };
+  const FlipObserver no_observer;
+  const FlipObserver& on_flip = carrier.active() ? carry_through_flip : no_observer;
   for (int sweep = 0; sweep < settings.max_sweeps; ++sweep) {
-    const Index splits = splitLongEdges(m, target, payload);
-    const Index collapses = collapseShortEdges(m, target, payload);
+    const Index splits = splitLongEdges(m, target, payload, carrier);
+    const Index collapses = collapseShortEdges(m, target, payload, carrier);
     compactAll(m, target, payload);
-    const Index flips = equalizeValences(m, true) + flipToDelaunay(m);
-    stats.relocations += relocateTangentially(m, payload.fixed);
+    carrier.measure(m);
+    const Index flips = equalizeValences(m, true, on_flip) + flipToDelaunay(m, on_flip);
+    stats.relocations += relocateTangentially(m, payload.fixed, &carrier);
+    carrier.measure(m);
     stats.splits += splits, stats.collapses += collapses, stats.flips += flips;
     ++stats.sweeps;
     // Edges near the split/collapse thresholds keep a trickle of edits going; once they

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "mesh/copy_carrier.hpp"
 #include "mesh/sizing_field.hpp"
 #include "mesh/surface_mesh.hpp"
 
@@ -15,9 +16,8 @@ namespace cortex {
 // Per-vertex data that must survive remeshing.
 struct VertexPayload {
   std::vector<char>* fixed = nullptr;  // fixed vertices are never moved or removed
-  // Integer copies (e.g. surface species): exact totals; a collapsed vertex's copies go
-  // to the vertex it merged into (its nearest neighbour); a split edge's new vertex
-  // takes a quarter of each end's copies.
+  // Integer copies (e.g. surface species): exact totals; they ride the lipid through
+  // every edit (copy_carrier.hpp).
   std::vector<std::vector<int>*> counts;
   // Extensive real quantities (e.g. material vertex areas): totals kept, redistributed
   // in proportion to the new vertex areas at the end of the pass.
@@ -37,7 +37,8 @@ RemeshStats remesh(SurfaceMesh& mesh, VertexPayload& payload, const RemeshSettin
 
 // One Jacobi sweep moving every vertex (but boundary and `fixed` ones) towards the
 // area-weighted centroid of its 1-ring, within its tangent plane, where that folds no
-// triangle: evens out the mesh without changing the shape. Returns how many moved.
-Index relocateTangentially(SurfaceMesh& mesh, const std::vector<char>* fixed);
+// triangle: evens out the mesh without changing the shape. Copies on the vertices follow
+// the cells, if a carrier is given. Returns how many moved.
+Index relocateTangentially(SurfaceMesh& mesh, const std::vector<char>* fixed, CopyCarrier* carrier = nullptr);
 
 }  // namespace cortex
