@@ -5,8 +5,11 @@
 #include <limits>
 #include <stdexcept>
 
+#include <spdlog/spdlog.h>
+
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "mesh/lipid_flow.hpp"
 
 namespace cortex {
 
@@ -75,6 +78,10 @@ double Membrane::coatCoverage() const {
 }
 
 RemeshStats Membrane::remesh(const RemeshSettings& settings) {
+  // A flow under way first moves the copies for the deformation so far, on the
+  // connectivity it was recorded on, and starts again on the new one.
+  const bool flowing = !lipid_area_before_.empty();
+  endLipidFlow();
   VertexPayload payload{&fixed_, {}, {&material_.vertex_area0}};
   for (std::vector<int>& c : species_copies_) payload.counts.push_back(&c);
   const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
@@ -89,16 +96,32 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   remesh_totals_.flips += stats.flips;
   remesh_totals_.relocations += stats.relocations;
   remesh_totals_.sweeps += stats.sweeps;
+  if (flowing) beginLipidFlow();
   return stats;
 }
 
-Index Membrane::relocateVertices() {
+bool Membrane::hasSpeciesCopies() const {
+  for (const std::vector<int>& c : species_copies_)
+    if (std::any_of(c.begin(), c.end(), [](int n) { return n != 0; })) return true;
+  return false;
+}
+
+void Membrane::beginLipidFlow() {
+  lipid_area_before_ = hasSpeciesCopies() ? currentGeometry().vertex_area : std::vector<double>{};
+}
+
+void Membrane::endLipidFlow() {
+  if (lipid_area_before_.empty()) return;
   std::vector<std::vector<int>*> counts;
   for (std::vector<int>& c : species_copies_) counts.push_back(&c);
-  CopyCarrier carrier = CopyCarrier::keyedByState(mesh_, std::move(counts));
-  const Index moved = relocateTangentially(mesh_, &fixed_, &carrier);
-  cache_valid_ = false;
-  return moved;
+  // Keyed by the state, like the remesher's carrier: a resumed run draws the same numbers.
+  RandomStream random = streamKeyedByState(mesh_, counts);
+  const LipidFlowStats stats =
+      carryWithLipidFlow(mesh_, lipid_area_before_, currentGeometry().vertex_area, counts, random);
+  if (stats.substeps > 0)
+    spdlog::trace("membrane \"{}\": lipid flow moved copies in {} sub-steps (largest outflow {:.3g} of a cell)",
+                  name_, stats.substeps, stats.largest_outflow);
+  lipid_area_before_.clear();
 }
 
 void Membrane::setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies) {

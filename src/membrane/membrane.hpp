@@ -124,9 +124,14 @@ class Membrane final : public Body {
   // along, and accumulates the operation counts. Connectivity and vertex count change:
   // the caller must lay out the coordinates again (System::layOut).
   RemeshStats remesh(const RemeshSettings& settings);
-  // One tangential relocation sweep (relocateTangentially), the species copies following
-  // the cells. Returns how many vertices moved.
-  Index relocateVertices();
+  // The species copies ride the lipid's tangential flow (mesh/lipid_flow.hpp) through
+  // the deformation between beginLipidFlow() and endLipidFlow() (one relaxation): the
+  // cells' areas are recorded at the beginning, and at the end (and before every remesh
+  // in between, which carries the copies itself) the copies move for the change. Nothing
+  // to do without copies.
+  void beginLipidFlow();
+  void endLipidFlow();
+  bool hasSpeciesCopies() const;
   // Remeshing after every minimization, if set (config remesh = true).
   const std::optional<RemeshSettings>& remeshing() const { return remeshing_; }
   void setRemeshing(std::optional<RemeshSettings> settings) { remeshing_ = std::move(settings); }
@@ -137,7 +142,7 @@ class Membrane final : public Body {
   void setRemeshTotals(const RemeshStats& totals) { remesh_totals_ = totals; }
 
   // Proteins living on the membrane (thesis chapter 3): copies per vertex of each species
-  // (`names`, in the config's order), carried exactly through remeshing. Throws
+  // (`names`, in the config's order), riding the lipid through remeshing. Throws
   // std::invalid_argument unless there is one non-negative count per vertex.
   void setSpecies(std::vector<std::string> names, std::vector<std::vector<int>> copies);
   const std::vector<std::string>& speciesNames() const { return species_names_; }
@@ -172,6 +177,7 @@ class Membrane final : public Body {
   RemeshStats remesh_totals_;
   std::vector<std::string> species_names_;
   std::vector<std::vector<int>> species_copies_;  // [species][vertex]
+  std::vector<double> lipid_area_before_;  // cell areas at beginLipidFlow (or the last remesh)
   std::optional<ProteinCoat> coat_;
   MembraneEquilibrium equilibrium_;
   MeshGeometry cache_;

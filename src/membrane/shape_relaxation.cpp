@@ -212,8 +212,10 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
                   m.name(), rep.outer, n, last.iterations, last.evaluations, moved, last.max_residual, last.value,
                   last.converged ? "converged" : last.stop_reason);
     if (s.progress) s.progress({rep.iterations, last.max_residual, rep.force_tolerance});
-    if (!at_targets && (last.converged || last.refresh || last.iterations >= 30)) continue;  // the next target
-    if (last.converged && moved <= kSettledStrain) {
+    // On the way to the targets an outer step ends at an intermediate target: no
+    // convergence test, but the mesh is kept in shape like after any other step.
+    const bool next_target = !at_targets && (last.converged || last.refresh || last.iterations >= 30);
+    if (!next_target && last.converged && moved <= kSettledStrain) {
       if (can_remesh && !final_remesh_done &&
           (moved_since_remesh > kRemeshStrain || measureQuality(m.mesh()).min_angle_deg < 25.0)) {
         // Once more on a fresh mesh for the converged shape, then stop.
@@ -228,7 +230,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       rep.converged = true;
       break;
     }
-    if (!last.converged && !last.refresh) {
+    if (!next_target && !last.converged && !last.refresh) {
       // An inner loop that hit its iteration cap gets fresh normals and a tidied mesh like
       // a refresh; a failed line search or an exhausted budget ends the relaxation.
       if (last.iterations < kMaxInnerIterations || iterations_left <= 0) {
@@ -245,7 +247,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       moved_since_remesh = 0.0;
       memory.clear();
     } else {
-      m.relocateVertices();
+      relocateTangentially(m.mesh(), &m.fixedVertices());
     }
   }
   if (!rep.converged && rep.stop_reason.empty()) rep.stop_reason = "maximum outer steps or iterations reached";

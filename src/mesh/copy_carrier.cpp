@@ -39,10 +39,15 @@ CopyCarrier::CopyCarrier(std::vector<std::vector<int>*> counts, RandomStream ran
     if (std::any_of(c->begin(), c->end(), [](int n) { return n != 0; })) active_ = true;
 }
 
-CopyCarrier CopyCarrier::keyedByState(const SurfaceMesh& mesh, std::vector<std::vector<int>*> counts) {
+RandomStream streamKeyedByState(const SurfaceMesh& mesh, const std::vector<std::vector<int>*>& counts) {
   std::uint64_t key = hashArray(mesh.positions(), fnv1a64(""));
   for (const std::vector<int>* c : counts) key = hashArray(*c, key);
-  CopyCarrier carrier(std::move(counts), RandomStream(key, StreamId::kCopyTransport));
+  return RandomStream(key, StreamId::kCopyTransport);
+}
+
+CopyCarrier CopyCarrier::keyedByState(const SurfaceMesh& mesh, std::vector<std::vector<int>*> counts) {
+  RandomStream random = streamKeyedByState(mesh, counts);
+  CopyCarrier carrier(std::move(counts), random);
   if (carrier.active()) carrier.measure(mesh);
   return carrier;
 }

@@ -30,9 +30,7 @@ class CopyCarrier {
   // Copies of each species per vertex, all of the mesh's vertex count. An empty list, or
   // no copies at all, makes the carrier inactive (every call returns at once).
   CopyCarrier(std::vector<std::vector<int>*> counts, RandomStream random);
-  // A carrier whose random stream is keyed by the mesh and copies as they are now: a pure
-  // function of the run's state, so runs and resumed runs draw the same numbers without a
-  // stream to checkpoint. Measures the cells if there are copies.
+  // A carrier with streamKeyedByState's stream; measures the cells if there are copies.
   static CopyCarrier keyedByState(const SurfaceMesh& mesh, std::vector<std::vector<int>*> counts);
 
   bool active() const { return active_; }
@@ -51,6 +49,11 @@ class CopyCarrier {
   bool active_ = false;
   std::vector<double> cell_area_;
 };
+
+// A random stream (StreamId::kCopyTransport) keyed by the mesh's positions and the copies
+// as they are now: a pure function of the run's state, so runs and resumed runs draw the
+// same numbers without a stream to checkpoint.
+RandomStream streamKeyedByState(const SurfaceMesh& mesh, const std::vector<std::vector<int>*>& counts);
 
 // The triangles around v as they are now, with their areas.
 std::vector<FaceArea> facesAround(const SurfaceMesh& mesh, Index v);

@@ -247,8 +247,8 @@ void Simulation::checkCoats(const std::vector<double>& coverage_before) const {
     if (after < (1.0 - kLargestCoatThinning) * coverage_before[i])
       throw RunError(fmt::format(
           "membrane \"{}\": the relaxation at t = {:.6g} s thinned the coat from a mean coverage of {:.3g} to {:.3g} by "
-          "stretching its cells (more than {:g}%): the copies stay on their vertices instead of moving with the lipid, "
-          "so this shape change is out of the model's reach (docs/proteins.md, curvature generation)",
+          "stretching its cells (more than {:g}%): the copies follow the lipid's flow, but not closely enough for a "
+          "shape change this large, which is out of the model's reach (docs/proteins.md, curvature generation)",
           m.name(), system_.time(), coverage_before[i], after, 100.0 * kLargestCoatThinning));
   }
 }
@@ -269,13 +269,12 @@ MinimizationResult Simulation::relax() {
   RunCounters& c = system_.counters;
   const bool by_body = mech_.kind == MinimizerKind::kAuto;
   for (ShapeRelaxationWarmStart& w : warm_starts_) w.newWindow();
+  std::vector<double> coverage;
   if (system_.hasMechanics()) {
     const auto start = std::chrono::steady_clock::now();
     const double force_seconds = system_.forceField().forceSeconds();
-    std::vector<double> coverage;
-    for (const auto& m : system_.membranes()) coverage.push_back(m->coatCoverage());
+    for (const auto& m : system_.membranes()) coverage.push_back(m->coatCoverage()), m->beginLipidFlow();
     r = by_body ? relaxByBody() : relaxAll();
-    checkCoats(coverage);
     c.force_seconds += system_.forceField().forceSeconds() - force_seconds;
     ++c.minimizations;
     c.minimizer_iterations += r.iterations;
@@ -283,6 +282,9 @@ MinimizationResult Simulation::relax() {
     c.mechanics_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   if (!by_body) remeshMembranes();  // the shape relaxation remeshes within
+  // The proteins ride the lipid through the relaxation's deformation (Membrane::beginLipidFlow).
+  for (const auto& m : system_.membranes()) m->endLipidFlow();
+  if (system_.hasMechanics()) checkCoats(coverage);
   checkMeshes();
   checkCrossings("after the relaxation");
   checkRelaxation(r);

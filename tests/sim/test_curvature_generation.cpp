@@ -112,12 +112,13 @@ TEST_P(CurvatureGeneration, CoatedStripeOnATensedPatchBulgesAsLinearTheorySays) 
     EXPECT_NEAR(height(u), theory(u), 0.05 * std::abs(h0)) << "x − x₀ = " << u << " nm; a = " << a << " nm";
 }
 
-// The model's limit, as an error: copies stay on their vertices while the relaxation
-// moves them, so a coat whose cells the relaxation stretches is thinned by the mesh, not
-// by physics. A dense coat (φ = 0.5, H_c φ = 0.0075 /nm) on the upper cap of a 300 nm
+// The model's limit, as an error: a coat whose cells the relaxation stretches is thinned
+// by the mesh, not by physics, as far as the lipid's flow does not bring its copies back
+// together. A dense coat (φ = 0.5, H_c φ = 0.0075 /nm) on the upper cap of a 300 nm
 // vesicle with its volume free domes out at once; its mean coverage fell 0.51 → 0.33 in
-// the first relaxation, and the run's result was a prolate vesicle under a coat of
-// φ ≈ 0.15. The run must stop with the reason (exit 1), not report that shape.
+// the first relaxation with the copies left in place (the run's result was a prolate
+// vesicle under a coat of φ ≈ 0.15), and falls 0.51 → 0.42 with them riding the flow.
+// The run must stop with the reason (exit 1), not report that shape.
 TEST(CurvatureGenerationLimit, ACoatThinnedByStretchingEndsTheRun) {
   const Config config = parseConfig(R"([simulation]
 end_time = 0.01
