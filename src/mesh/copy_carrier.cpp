@@ -53,15 +53,7 @@ CopyCarrier CopyCarrier::keyedByState(const SurfaceMesh& mesh, std::vector<std::
 }
 
 void CopyCarrier::measure(const SurfaceMesh& m) {
-  if (!active_) return;
-  cell_area_.assign(m.numVertices(), 0.0);
-  const auto& p = m.positions();
-  for (Index f = 0; f < m.numFaces(); ++f) {
-    if (m.isDeletedFace(f)) continue;
-    const Tri t = m.faceVertices(f);
-    const double third = triangleArea(p[t[0]], p[t[1]], p[t[2]]) / 3.0;
-    for (const Index v : t) cell_area_[v] += third;
-  }
+  if (active_) cell_area_ = dualCellAreas(m);
 }
 
 void CopyCarrier::addVertex() {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/random.hpp"
+#include "mesh/dual_cells.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace cortex {

@@ -152,13 +152,7 @@ void compactAll(SurfaceMesh& m, std::vector<double>& target, VertexPayload& payl
 
 void redistributeExtensive(const SurfaceMesh& m, VertexPayload& payload) {
   if (payload.extensive.empty()) return;
-  std::vector<double> area(m.numVertices(), 0.0);
-  const auto& p = m.positions();
-  for (Index f = 0; f < m.numFaces(); ++f) {
-    const Tri t = m.faceVertices(f);
-    const double third = faceNormal(p[t[0]], p[t[1]], p[t[2]]).norm() / 6.0;
-    for (Index v : t) area[v] += third;
-  }
+  const std::vector<double> area = dualCellAreas(m);
   const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
   for (std::vector<double>* e : payload.extensive) {
     const double total = std::accumulate(e->begin(), e->end(), 0.0);

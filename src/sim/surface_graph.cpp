@@ -1,22 +1,8 @@
 #include "sim/surface_graph.hpp"
 
-#include <stdexcept>
-
 #include "mesh/cotan.hpp"
 
 namespace cortex {
-
-std::vector<double> dualCellAreas(const SurfaceMesh& mesh) {
-  const auto& x = mesh.positions();
-  std::vector<double> area(static_cast<std::size_t>(mesh.numVertices()), 0.0);
-  for (Index f = 0; f < mesh.numFaces(); ++f) {
-    if (mesh.isDeletedFace(f)) throw std::logic_error("dualCellAreas: the mesh has deleted faces (garbageCollect first)");
-    const Tri t = mesh.faceVertices(f);
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
-    for (Index v : t) area[v] += third;
-  }
-  return area;
-}
 
 DualCellGraph dualCellGraph(const SurfaceMesh& mesh) {
   const Index n = mesh.numVertices();

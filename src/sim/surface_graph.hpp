@@ -15,6 +15,7 @@
 #pragma once
 
 #include "chem/subvolume_graph.hpp"
+#include "mesh/dual_cells.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace cortex {
@@ -26,8 +27,5 @@ struct DualCellGraph {
 
 // `mesh` must be compacted (no deleted elements, as after garbageCollect()).
 DualCellGraph dualCellGraph(const SurfaceMesh& mesh);
-
-// The dual-cell areas |C_j| (nm^2) alone: dualCellGraph(mesh).graph.size.
-std::vector<double> dualCellAreas(const SurfaceMesh& mesh);
 
 }  // namespace cortex

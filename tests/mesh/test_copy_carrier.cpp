@@ -12,53 +12,11 @@
 #include "mesh/implicit_shapes.hpp"
 #include "mesh/marching_tetrahedra.hpp"
 #include "mesh/remesh.hpp"
+#include "copy_statistics.hpp"
 #include "test_meshes.hpp"
 
 namespace cortex {
 namespace {
-
-std::vector<double> cellAreas(const SurfaceMesh& m) {
-  std::vector<double> area(m.numVertices(), 0.0);
-  const auto& p = m.positions();
-  for (Index f = 0; f < m.numFaces(); ++f) {
-    const Tri t = m.faceVertices(f);
-    for (const Index v : t) area[v] += triangleArea(p[t[0]], p[t[1]], p[t[2]]) / 3.0;
-  }
-  return area;
-}
-
-// `total` copies dropped one by one on the cells (among those `where` accepts) with
-// probability proportional to their areas.
-template <class Where>
-std::vector<int> dropCopies(const SurfaceMesh& m, long total, unsigned seed, Where where) {
-  std::vector<double> weight = cellAreas(m);
-  for (Index v = 0; v < m.numVertices(); ++v)
-    if (!where(m.positions()[v])) weight[v] = 0.0;
-  std::mt19937 rng(seed);
-  std::discrete_distribution<Index> cell(weight.begin(), weight.end());
-  std::vector<int> copies(m.numVertices(), 0);
-  for (long k = 0; k < total; ++k) ++copies[cell(rng)];
-  return copies;
-}
-
-// Pearson chi-square per cell of the copies against a density uniform over the cells
-// `where` accepts. For copies spread by area it is 1 ± sqrt(2/cells).
-template <class Where>
-double chiSquarePerCell(const SurfaceMesh& m, const std::vector<int>& copies, Where where) {
-  const std::vector<double> area = cellAreas(m);
-  double region = 0.0;
-  long total = 0;
-  Index cells = 0;
-  for (Index v = 0; v < m.numVertices(); ++v)
-    if (where(m.positions()[v])) region += area[v], total += copies[v], ++cells;
-  double chi2 = 0.0;
-  for (Index v = 0; v < m.numVertices(); ++v) {
-    if (!where(m.positions()[v])) continue;
-    const double expected = total * area[v] / region;
-    chi2 += (copies[v] - expected) * (copies[v] - expected) / expected;
-  }
-  return chi2 / cells;
-}
 
 RemeshSettings sizing(double flat) {
   RemeshSettings s;
@@ -69,20 +27,19 @@ RemeshSettings sizing(double flat) {
   return s;
 }
 
-const auto everywhere = [](const Vec3&) { return true; };
 
 void expectUniformAfterRemeshing(SurfaceMesh m, const RemeshSettings& settings, const char* what) {
   SCOPED_TRACE(what);
   const long total = 200L * m.numVertices();
-  std::vector<int> copies = dropCopies(m, total, static_cast<unsigned>(m.numVertices()), everywhere);
+  std::vector<int> copies = testing::dropCopiesByArea(m, total, static_cast<unsigned>(m.numVertices()));
   std::vector<char> fixed(m.numVertices());
   for (Index v = 0; v < m.numVertices(); ++v) fixed[v] = m.isBoundaryVertex(v);
   VertexPayload payload{&fixed, {&copies}, {}};
-  ASSERT_NEAR(chiSquarePerCell(m, copies, everywhere), 1.0, 0.15);
+  ASSERT_NEAR(testing::chiSquarePerCell(m, copies), 1.0, 0.15);
   const RemeshStats stats = remesh(m, payload, settings);
   EXPECT_GT(stats.splits + stats.collapses + stats.flips, m.numVertices() / 2) << "the pass must edit a lot";
   EXPECT_EQ(std::accumulate(copies.begin(), copies.end(), 0L), total);
-  const double chi2 = chiSquarePerCell(m, copies, everywhere);
+  const double chi2 = testing::chiSquarePerCell(m, copies);
   std::printf("[ measured ] %s: %ld splits %ld collapses %ld flips %ld relocations, %d cells, chi2/cell %.3f\n", what,
               static_cast<long>(stats.splits), static_cast<long>(stats.collapses), static_cast<long>(stats.flips),
               static_cast<long>(stats.relocations), static_cast<int>(m.numVertices()), chi2);
@@ -121,7 +78,7 @@ TEST(CopyCarrier, ACoatKeepsItsEdgeThroughRemeshing) {
   const double radius = 300.0, edge = 45.0;
   SurfaceMesh m = testing::sphereMesh(radius, 3);
   const long total = 200L * m.numVertices() / 2;
-  std::vector<int> copies = dropCopies(m, total, 8, [](const Vec3& x) { return x.z() > 0.0; });
+  std::vector<int> copies = testing::dropCopiesByArea(m, total, 8, [](const Vec3& x) { return x.z() > 0.0; });
   VertexPayload payload{nullptr, {&copies}, {}};
   remesh(m, payload, sizing(edge / 2));
   remesh(m, payload, sizing(edge / 2));
@@ -131,7 +88,7 @@ TEST(CopyCarrier, ACoatKeepsItsEdgeThroughRemeshing) {
     if (m.positions()[v].z() < -2 * edge) strays += copies[v];
   EXPECT_EQ(strays, 0);
   const auto inside = [&](const Vec3& x) { return x.z() > 2 * edge; };
-  EXPECT_NEAR(chiSquarePerCell(m, copies, inside), 1.0, 0.2);
+  EXPECT_NEAR(testing::chiSquarePerCell(m, copies, inside), 1.0, 0.2);
 }
 
 // Edits by hand on a patch's cells (the carrier trusts the triangles it is told of):
@@ -142,7 +99,7 @@ TEST(CopyCarrier, ACoatKeepsItsEdgeThroughRemeshing) {
 // it is gone and all its copies go where the area went. The draws repeat for the same key.
 TEST(CopyCarrier, AnEditMovesTheLipidsShareOfCopies) {
   const SurfaceMesh m = testing::patchMesh(200.0, 50.0);
-  const double cell0 = cellAreas(m)[0];
+  const double cell0 = dualCellAreas(m)[0];
   auto run = [&](std::uint64_t key) {
     std::vector<int> copies(m.numVertices(), 0), other(m.numVertices(), 0);
     copies[0] = 100000, other[0] = 3, other[1] = 9;
@@ -155,7 +112,7 @@ TEST(CopyCarrier, AnEditMovesTheLipidsShareOfCopies) {
     EXPECT_EQ(other[1], 9) << "a cell whose area did not change keeps its copies";
     EXPECT_NEAR(copies[3], 40000, 5 * 155);
     const std::vector<int> moved = copies;
-    const double cell3 = cellAreas(m)[3] + s;  // all of it goes
+    const double cell3 = dualCellAreas(m)[3] + s;  // all of it goes
     const FaceArea gone[] = {{{1, 2, 3}, 3 * cell3}}, appeared[] = {{{1, 2, 4}, 3 * cell3}};
     carrier.replaced(gone, appeared);
     EXPECT_EQ(copies[3], 0);

@@ -9,41 +9,11 @@
 
 #include "mesh/copy_carrier.hpp"
 #include "mesh/lipid_flow.hpp"
+#include "copy_statistics.hpp"
 #include "test_meshes.hpp"
 
 namespace cortex {
 namespace {
-
-std::vector<double> cellAreas(const SurfaceMesh& m) {
-  std::vector<double> area(m.numVertices(), 0.0);
-  const auto& p = m.positions();
-  for (Index f = 0; f < m.numFaces(); ++f) {
-    const Tri t = m.faceVertices(f);
-    for (const Index v : t) area[v] += triangleArea(p[t[0]], p[t[1]], p[t[2]]) / 3.0;
-  }
-  return area;
-}
-
-std::vector<int> dropByArea(const SurfaceMesh& m, long total, unsigned seed) {
-  const std::vector<double> area = cellAreas(m);
-  std::mt19937 rng(seed);
-  std::discrete_distribution<Index> cell(area.begin(), area.end());
-  std::vector<int> copies(m.numVertices(), 0);
-  for (long k = 0; k < total; ++k) ++copies[cell(rng)];
-  return copies;
-}
-
-double chiSquarePerCell(const SurfaceMesh& m, const std::vector<int>& copies) {
-  const std::vector<double> area = cellAreas(m);
-  const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
-  const long total = std::accumulate(copies.begin(), copies.end(), 0L);
-  double chi2 = 0.0;
-  for (Index v = 0; v < m.numVertices(); ++v) {
-    const double expected = total * area[v] / total_area;
-    chi2 += (copies[v] - expected) * (copies[v] - expected) / expected;
-  }
-  return chi2 / m.numVertices();
-}
 
 // 200 copies per cell spread by area, then the vertices moved by `deform`: left in place
 // the copies no longer match a uniform density; carried by the flow, chi-square per cell
@@ -52,14 +22,14 @@ template <class Deform>
 void expectFlowKeepsUniform(SurfaceMesh m, Deform deform, const char* what) {
   SCOPED_TRACE(what);
   const long total = 200L * m.numVertices();
-  std::vector<int> copies = dropByArea(m, total, static_cast<unsigned>(m.numVertices()));
-  const std::vector<double> before = cellAreas(m);
+  std::vector<int> copies = testing::dropCopiesByArea(m, total, static_cast<unsigned>(m.numVertices()));
+  const std::vector<double> before = dualCellAreas(m);
   for (Vec3& x : m.positions()) x = deform(x);
-  const double left_in_place = chiSquarePerCell(m, copies);
+  const double left_in_place = testing::chiSquarePerCell(m, copies);
   EXPECT_GT(left_in_place, 2.0) << "the deformation must matter for the test to mean anything";
   RandomStream random(1, StreamId::kCopyTransport);
-  const LipidFlowStats stats = carryWithLipidFlow(m, before, cellAreas(m), {&copies}, random);
-  const double carried = chiSquarePerCell(m, copies);
+  const LipidFlowStats stats = carryWithLipidFlow(m, before, dualCellAreas(m), {&copies}, random);
+  const double carried = testing::chiSquarePerCell(m, copies);
   std::printf("[ measured ] %s: chi2/cell left in place %.2f, carried %.3f (%d sub-steps, largest outflow %.2f)\n",
               what, left_in_place, carried, stats.substeps, stats.largest_outflow);
   EXPECT_EQ(std::accumulate(copies.begin(), copies.end(), 0L), total);
@@ -90,12 +60,12 @@ TEST(LipidFlow, KeepsAUniformDensityUniformThroughDeformations) {
 // A uniform dilation stretches every cell alike: no lipid flows, no copy moves.
 TEST(LipidFlow, AUniformDilationMovesNoCopy) {
   SurfaceMesh m = testing::sphereMesh(300.0, 3);
-  std::vector<int> copies = dropByArea(m, 50L * m.numVertices(), 4);
+  std::vector<int> copies = testing::dropCopiesByArea(m, 50L * m.numVertices(), 4);
   const std::vector<int> start = copies;
-  const std::vector<double> before = cellAreas(m);
+  const std::vector<double> before = dualCellAreas(m);
   for (Vec3& x : m.positions()) x *= 1.2;
   RandomStream random(1, StreamId::kCopyTransport);
-  const LipidFlowStats stats = carryWithLipidFlow(m, before, cellAreas(m), {&copies}, random);
+  const LipidFlowStats stats = carryWithLipidFlow(m, before, dualCellAreas(m), {&copies}, random);
   EXPECT_EQ(stats.substeps, 0);
   EXPECT_EQ(copies, start);
 }

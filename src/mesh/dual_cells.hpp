@@ -1,0 +1,16 @@
+// The dual cells of a triangle mesh's vertices: cell j is a third of the area of the
+// triangles around vertex j, so the cells tile the surface exactly. Copies of membrane
+// species live on them (sim/surface_graph.hpp, mesh/copy_carrier.hpp).
+#pragma once
+
+#include <vector>
+
+#include "mesh/surface_mesh.hpp"
+
+namespace cortex {
+
+// The dual-cell areas |C_j| (nm^2). `mesh` must be compacted (no deleted elements, as
+// after garbageCollect()).
+std::vector<double> dualCellAreas(const SurfaceMesh& mesh);
+
+}  // namespace cortex
