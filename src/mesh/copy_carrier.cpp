@@ -62,11 +62,8 @@ void CopyCarrier::addVertex() {
 
 void CopyCarrier::replaced(std::span<const FaceArea> removed, std::span<const FaceArea> added) {
   if (!active_) return;
-  struct Cell {
-    Index vertex;
-    double before, after;
-  };
-  std::vector<Cell> cells;
+  std::vector<Cell>& cells = cells_;  // reused: an edit touches a handful of cells
+  cells.clear();
   auto cell = [&](Index v) -> Cell& {
     for (Cell& c : cells)
       if (c.vertex == v) return c;
@@ -88,7 +85,8 @@ void CopyCarrier::replaced(std::span<const FaceArea> removed, std::span<const Fa
   // Receivers and their weights: the cells that grew, by their gain. Where none grew (a
   // collapse of slivers of no area), the copies of a vanished cell go to the cells left,
   // by their area, and no other copy moves.
-  std::vector<std::pair<Index, double>> receivers;  // vertex, weight
+  std::vector<std::pair<Index, double>>& receivers = receivers_;  // vertex, weight
+  receivers.clear();
   for (const Cell& c : cells) {
     const double weight = growth > 0.0 ? c.after - c.before : c.after;
     if (weight > kNegligibleChange * c.before && c.after > 0.0) receivers.emplace_back(c.vertex, weight);

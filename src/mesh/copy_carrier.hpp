@@ -13,6 +13,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/random.hpp"
@@ -49,6 +50,12 @@ class CopyCarrier {
   RandomStream random_;
   bool active_ = false;
   std::vector<double> cell_area_;
+  struct Cell {
+    Index vertex;
+    double before, after;  // area, nm^2
+  };
+  std::vector<Cell> cells_;                            // of the edit at hand
+  std::vector<std::pair<Index, double>> receivers_;    // vertex, weight
 };
 
 // A random stream (StreamId::kCopyTransport) keyed by the mesh's positions and the copies
