@@ -9,6 +9,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "mesh/copy_carrier.hpp"
 #include "mesh/lipid_flow.hpp"
 
 namespace cortex {
@@ -82,8 +83,7 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   // connectivity it was recorded on, and starts again on the new one.
   const bool flowing = !lipid_area_before_.empty();
   endLipidFlow();
-  VertexPayload payload{&fixed_, {}, {&material_.vertex_area0}};
-  for (std::vector<int>& c : species_copies_) payload.counts.push_back(&c);
+  VertexPayload payload{&fixed_, speciesCountPointers(), {&material_.vertex_area0}};
   const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
   // Rebuilt from its triangle list, the half-edge layout is the one a checkpoint restores
   // (edits leave it in edit order), so a resumed run remeshes exactly as this one.
@@ -100,24 +100,23 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   return stats;
 }
 
-bool Membrane::hasSpeciesCopies() const {
-  for (const std::vector<int>& c : species_copies_)
-    if (std::any_of(c.begin(), c.end(), [](int n) { return n != 0; })) return true;
-  return false;
+std::vector<std::vector<int>*> Membrane::speciesCountPointers() {
+  std::vector<std::vector<int>*> counts;
+  for (std::vector<int>& c : species_copies_) counts.push_back(&c);
+  return counts;
 }
 
 void Membrane::beginLipidFlow() {
-  lipid_area_before_ = hasSpeciesCopies() ? currentGeometry().vertex_area : std::vector<double>{};
+  lipid_area_before_ = anyCopies(speciesCountPointers()) ? dualCellAreas(mesh_) : std::vector<double>{};
 }
 
 void Membrane::endLipidFlow() {
   if (lipid_area_before_.empty()) return;
-  std::vector<std::vector<int>*> counts;
-  for (std::vector<int>& c : species_copies_) counts.push_back(&c);
+  const std::vector<std::vector<int>*> counts = speciesCountPointers();
   // Keyed by the state, like the remesher's carrier: a resumed run draws the same numbers.
   RandomStream random = streamKeyedByState(mesh_, counts);
   const LipidFlowStats stats =
-      carryWithLipidFlow(mesh_, lipid_area_before_, currentGeometry().vertex_area, counts, random);
+      carryWithLipidFlow(mesh_, lipid_area_before_, dualCellAreas(mesh_), counts, random);
   if (stats.substeps > 0)
     spdlog::trace("membrane \"{}\": lipid flow moved copies in {} sub-steps (largest outflow {:.3g} of a cell)",
                   name_, stats.substeps, stats.largest_outflow);

@@ -131,7 +131,6 @@ class Membrane final : public Body {
   // to do without copies.
   void beginLipidFlow();
   void endLipidFlow();
-  bool hasSpeciesCopies() const;
   // Remeshing after every minimization, if set (config remesh = true).
   const std::optional<RemeshSettings>& remeshing() const { return remeshing_; }
   void setRemeshing(std::optional<RemeshSettings> settings) { remeshing_ = std::move(settings); }
@@ -178,6 +177,7 @@ class Membrane final : public Body {
   std::vector<std::string> species_names_;
   std::vector<std::vector<int>> species_copies_;  // [species][vertex]
   std::vector<double> lipid_area_before_;  // cell areas at beginLipidFlow (or the last remesh)
+  std::vector<std::vector<int>*> speciesCountPointers();  // one per species, for the mesh's carriers
   std::optional<ProteinCoat> coat_;
   MembraneEquilibrium equilibrium_;
   MeshGeometry cache_;

@@ -20,8 +20,6 @@ std::uint64_t hashArray(const std::vector<T>& values, std::uint64_t hash) {
 
 }  // namespace
 
-double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
-
 std::vector<FaceArea> facesAround(const SurfaceMesh& m, Index v) {
   std::vector<FaceArea> faces;
   const auto& p = m.positions();
@@ -33,11 +31,14 @@ std::vector<FaceArea> facesAround(const SurfaceMesh& m, Index v) {
   return faces;
 }
 
-CopyCarrier::CopyCarrier(std::vector<std::vector<int>*> counts, RandomStream random)
-    : counts_(std::move(counts)), random_(random) {
-  for (const std::vector<int>* c : counts_)
-    if (std::any_of(c->begin(), c->end(), [](int n) { return n != 0; })) active_ = true;
+bool anyCopies(const std::vector<std::vector<int>*>& counts) {
+  return std::any_of(counts.begin(), counts.end(), [](const std::vector<int>* c) {
+    return std::any_of(c->begin(), c->end(), [](int n) { return n != 0; });
+  });
 }
+
+CopyCarrier::CopyCarrier(std::vector<std::vector<int>*> counts, RandomStream random)
+    : counts_(std::move(counts)), random_(random), active_(anyCopies(counts_)) {}
 
 RandomStream streamKeyedByState(const SurfaceMesh& mesh, const std::vector<std::vector<int>*>& counts) {
   std::uint64_t key = hashArray(mesh.positions(), fnv1a64(""));

@@ -65,6 +65,7 @@ RandomStream streamKeyedByState(const SurfaceMesh& mesh, const std::vector<std::
 
 // The triangles around v as they are now, with their areas.
 std::vector<FaceArea> facesAround(const SurfaceMesh& mesh, Index v);
-double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c);
+// True if any of the arrays holds a copy.
+bool anyCopies(const std::vector<std::vector<int>*>& counts);
 
 }  // namespace cortex

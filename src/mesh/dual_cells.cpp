@@ -10,7 +10,7 @@ std::vector<double> dualCellAreas(const SurfaceMesh& mesh) {
   for (Index f = 0; f < mesh.numFaces(); ++f) {
     if (mesh.isDeletedFace(f)) throw std::logic_error("dualCellAreas: the mesh has deleted faces (garbageCollect first)");
     const Tri t = mesh.faceVertices(f);
-    const double third = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() / 6.0;
+    const double third = triangleArea(x[t[0]], x[t[1]], x[t[2]]) / 3.0;
     for (Index v : t) area[v] += third;
   }
   return area;

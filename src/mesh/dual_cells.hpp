@@ -9,6 +9,8 @@
 
 namespace cortex {
 
+inline double triangleArea(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
+
 // The dual-cell areas |C_j| (nm^2). `mesh` must be compacted (no deleted elements, as
 // after garbageCollect()).
 std::vector<double> dualCellAreas(const SurfaceMesh& mesh);

@@ -284,7 +284,7 @@ MinimizationResult Simulation::relax() {
   if (!by_body) remeshMembranes();  // the shape relaxation remeshes within
   // The proteins ride the lipid through the relaxation's deformation (Membrane::beginLipidFlow).
   for (const auto& m : system_.membranes()) m->endLipidFlow();
-  if (system_.hasMechanics()) checkCoats(coverage);
+  checkCoats(coverage);  // empty without mechanics: nothing relaxed
   checkMeshes();
   checkCrossings("after the relaxation");
   checkRelaxation(r);
