@@ -138,6 +138,11 @@ bool NormalDisplacementProblem::admissible(const Eigen::VectorXd& u) {
 // vesicle by tens of degrees at great cost. Their area-weighted components are fixed;
 // rows are orthonormalized and degenerate ones dropped (rotations about a symmetry
 // axis). A membrane with fixed vertices has no rigid modes.
+Eigen::VectorXd NormalDisplacementProblem::rigidPart(const Eigen::VectorXd& r) const {
+  if (rigid_.rows() == 0) return Eigen::VectorXd::Zero(r.size());
+  return rigid_.transpose() * (rigid_ * r);
+}
+
 void NormalDisplacementProblem::buildRigidRows() {
   for (char f : fixed_)
     if (f) return;

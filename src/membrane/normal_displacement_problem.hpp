@@ -31,6 +31,9 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   Index size() const override { return static_cast<Index>(normals_.size()); }
   int numConstraints() const override { return int(exact_area_) + int(exact_volume_) + static_cast<int>(rigid_.rows()); }
   const std::vector<Vec3>& normals() const { return normals_; }
+  // The part of a residual r (one normal force per vertex) along the rigid-body rows,
+  // Rᵀ R r: what the rows hold (zero for a membrane without them).
+  Eigen::VectorXd rigidPart(const Eigen::VectorXd& r) const;
 
   const Eigen::VectorXd& positionsAt(const Eigen::VectorXd& u);
   // The energy and its full gradient (3 per vertex) at u.

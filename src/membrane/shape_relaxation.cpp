@@ -294,9 +294,26 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       for (Index v = 0; v < n; ++v) lagrangian.segment<3>(3 * v) -= lambda[col] * geo.volume_gradient[v];
     }
     const auto& normals = problem.normals();
+    // The rigid rows hold the membrane where it is; what they hold is no residual of the
+    // shape (the inner loop converges with their multipliers too), but it is reported.
+    Eigen::VectorXd normal_force(n);
+    for (Index v = 0; v < n; ++v)
+      normal_force[v] = m.fixedVertices()[v] ? 0.0 : normals[v].dot(lagrangian.segment<3>(3 * v));
+    const Eigen::VectorXd held = normal_force.allFinite() ? problem.rigidPart(normal_force) : Eigen::VectorXd::Zero(n);
+    const auto& x = m.mesh().positions();
+    Vec3 centroid = Vec3::Zero();
+    for (Index v = 0; v < n; ++v) centroid += geo.vertex_area[v] * x[v];
+    centroid /= geo.area;
+    Vec3 held_force = Vec3::Zero(), held_torque = Vec3::Zero();
+    for (Index v = 0; v < n; ++v) {
+      held_force += held[v] * normals[v];
+      held_torque += (x[v] - centroid).cross(held[v] * normals[v]);
+    }
+    rep.held_force = held_force.norm();
+    rep.held_torque = held_torque.norm();
     for (Index v = 0; v < n; ++v) {
       if (m.fixedVertices()[v]) continue;
-      const Vec3 f = lagrangian.segment<3>(3 * v);
+      const Vec3 f = lagrangian.segment<3>(3 * v) - held[v] * normals[v];
       if (!f.allFinite()) {
         // Not a number is not zero: this must never read as converged.
         rep.max_force = rep.max_normal_force = std::numeric_limits<double>::infinity();

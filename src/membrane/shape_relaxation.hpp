@@ -92,8 +92,12 @@ struct ShapeRelaxationReport {
   double seconds = 0.0, factor_seconds = 0.0, solve_seconds = 0.0, force_seconds = 0.0, remesh_seconds = 0.0;
   double force_tolerance = 0.0;   // pN, the one used
   double energy = 0.0;            // pN·nm, the membrane's terms
-  double max_normal_force = 0.0;  // pN, the converged quantity
+  double max_normal_force = 0.0;  // pN, the converged quantity (the rigid rows' reactions taken out)
   double max_force = 0.0;         // pN, largest |∇E − λ·∇c| on one vertex, tangential included
+  // What the rigid-body rows hold the membrane against (docs/membrane.md): the net force
+  // (pN) and torque about the area centroid (pN·nm) of their reactions. Zero for a free
+  // membrane whose tangential forces vanish; a coat on the vertices makes them finite.
+  double held_force = 0.0, held_torque = 0.0;
   bool area_held = false, volume_held = false;   // which constraints were exact
   double area_error = 0.0, volume_error = 0.0;  // relative to the targets (held ones only)
   Index vertices = 0;

@@ -178,6 +178,10 @@ MinimizationResult Simulation::relaxMembranes() {
                   rep.outer, rep.iterations, rep.force_evaluations, rep.constraint_evaluations, rep.factorizations,
                   rep.preconditioner_solves, rep.remeshes, rep.vertices,
                   rep.max_normal_force, rep.force_tolerance, held);
+    if (rep.held_force > 0 || rep.held_torque > 0)
+      spdlog::debug("t = {:.6g} s: membrane \"{}\" held in place by its rigid-body rows against a net force of "
+                    "{:.3g} pN and a torque of {:.3g} pN nm",
+                    system_.time(), m->name(), rep.held_force, rep.held_torque);
     r.iterations += rep.iterations;
     r.energy += rep.energy;
     if (rep.max_normal_force > r.max_force) r.max_force = rep.max_normal_force;
