@@ -117,9 +117,9 @@ void Membrane::endLipidFlow() {
   RandomStream random = streamKeyedByState(mesh_, counts);
   const LipidFlowStats stats =
       carryWithLipidFlow(mesh_, lipid_area_before_, dualCellAreas(mesh_), counts, random);
-  if (stats.substeps > 0)
-    spdlog::trace("membrane \"{}\": lipid flow moved copies in {} sub-steps (largest outflow {:.3g} of a cell)",
-                  name_, stats.substeps, stats.largest_outflow);
+  if (stats.cells_drained > 0)
+    spdlog::trace("membrane \"{}\": lipid flow out of {} cells (largest outflow {:.3g} of a cell)", name_,
+                  stats.cells_drained, stats.largest_outflow);
   lipid_area_before_.clear();
 }
 

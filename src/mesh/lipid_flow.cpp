@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <utility>
 
 #include "mesh/cotan.hpp"
 
@@ -16,11 +17,43 @@ namespace {
 constexpr double kMinWeight = 0.05;
 // Outflows below this share of a cell's lipid are round-off.
 constexpr double kNoFlow = 1e-9;
-// Largest share of a cell's copies that may leave it in one sub-step: the upwind
-// transport smears an edge less the closer each sub-step comes to emptying the cells
-// it drains (a coat's coverage after a transport across ~9 cells: 0.456 at 1.0, 0.446 at
-// 0.5, against 0.515 before it).
-constexpr double kMaxShare = 1.0;
+
+// Lipid crossing one edge over the step (area), towards `to`.
+struct Flux {
+  Index to;
+  double area;
+};
+
+// A parcel of lipid with the copies on it, and when it reached its present cell (the
+// step's pseudo-time in [0, 1): the flow is steady over the step; -1 for the cell's own).
+struct Parcel {
+  double area;
+  double time;
+  std::vector<int> copies;  // per species
+};
+
+// Arrivals beyond this many per cell are merged pairwise (neighbours in arrival time):
+// what a long chain of cells passes on stays ordered to within 1/kMostParcels of the step.
+constexpr std::size_t kMostParcels = 32;
+
+// Keeps the cells just sent to within kMostParcels arrivals.
+void mergeParcels(std::vector<std::vector<Parcel>>& arrivals, const std::vector<Flux>& sent_to) {
+  for (const Flux& e : sent_to) {
+    std::vector<Parcel>& q = arrivals[e.to];
+    if (q.size() <= kMostParcels) continue;
+    std::stable_sort(q.begin(), q.end(), [](const Parcel& x, const Parcel& y) { return x.time < y.time; });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < q.size(); i += 2, ++kept) {
+      Parcel merged = std::move(q[i]);
+      if (i + 1 < q.size()) {
+        merged.area += q[i + 1].area;
+        for (std::size_t s = 0; s < merged.copies.size(); ++s) merged.copies[s] += q[i + 1].copies[s];
+      }
+      q[kept] = std::move(merged);
+    }
+    q.resize(kept);
+  }
+}
 
 }  // namespace
 
@@ -65,20 +98,15 @@ LipidFlowStats carryWithLipidFlow(const SurfaceMesh& m, std::span<const double> 
   if (solver.info() != Eigen::Success) return stats;
   const Eigen::VectorXd psi = solver.solve(-growth);
 
-  // Outgoing fluxes per cell (area per whole step), and the sub-steps they need.
-  struct Flux {
-    Index from, to;
-    double area;
-  };
-  std::vector<Flux> fluxes;
+  // The edges' fluxes (area per whole step), each from its upstream end.
+  std::vector<std::vector<Flux>> out_edges(n);
   std::vector<double> outflow(n, 0.0);
   for (const auto& [h, w] : edges) {
     const Index a = m.tail(h), b = m.tip(h);
     const double f = w * (psi[a] - psi[b]);
-    if (f > 0) fluxes.push_back({a, b, f}), outflow[a] += f;
-    if (f < 0) fluxes.push_back({b, a, -f}), outflow[b] += -f;
+    if (f > 0) out_edges[a].push_back({b, f}), outflow[a] += f;
+    if (f < 0) out_edges[b].push_back({a, -f}), outflow[b] += -f;
   }
-  std::stable_sort(fluxes.begin(), fluxes.end(), [](const Flux& x, const Flux& y) { return x.from < y.from; });
   double worst = 0.0;
   for (Index v = 0; v < n; ++v) {
     const double smallest = std::min(before[v], before[v] + growth[v]);
@@ -88,28 +116,64 @@ LipidFlowStats carryWithLipidFlow(const SurfaceMesh& m, std::span<const double> 
   // Below kNoFlow the flow is round-off of a uniform dilation; a cell of no area cannot
   // hold lipid to send (a degenerate mesh: the relaxation's checks report it).
   if (!(worst > kNoFlow) || !std::isfinite(worst)) return stats;
-  stats.substeps = static_cast<int>(std::ceil(worst / kMaxShare));
 
-  std::vector<int> arriving(n);
-  for (int k = 0; k < stats.substeps; ++k) {
-    const double s = static_cast<double>(k) / stats.substeps;
-    for (std::vector<int>* copies : counts) {
-      std::fill(arriving.begin(), arriving.end(), 0);
-      for (std::size_t i = 0; i < fluxes.size();) {
-        const Index v = fluxes[i].from;
-        const double area = before[v] + s * growth[v];  // the lipid the cell holds now
-        int left = (*copies)[v];
-        double stay = 1.0;  // probability, among the copies not yet sent, of staying
-        for (; i < fluxes.size() && fluxes[i].from == v; ++i) {
-          const double p = fluxes[i].area / stats.substeps / area;
-          if (left == 0) continue;
-          const int go = std::binomial_distribution<int>(left, std::min(1.0, p / stay))(random);
-          left -= go, stay -= p;
-          (*copies)[v] -= go, arriving[fluxes[i].to] += go;
-        }
-      }
-      for (Index v = 0; v < n; ++v) (*copies)[v] += arriving[v];
+  // Upstream cells first: psi falls along every flux, so each cell's arrivals are all
+  // known when its turn comes (ties in psi carry no flux between them).
+  std::vector<Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Index x, Index y) { return psi[x] > psi[y]; });
+  const std::size_t species = counts.size();
+  std::vector<std::vector<Parcel>> arrivals(n);
+  std::vector<Parcel> leaving;
+  std::vector<int> stay(species);
+  for (const Index v : order) {
+    std::vector<Parcel>& queue = arrivals[v];
+    if (outflow[v] <= 0.0) {
+      for (const Parcel& p : queue)
+        for (std::size_t s = 0; s < species; ++s) (*counts[s])[v] += p.copies[s];
+      continue;
     }
+    ++stats.cells_drained;
+    // The cell's lipid in the order it leaves: its own first, then what arrives, in the
+    // order it arrives (plug flow through the cell).
+    std::stable_sort(queue.begin(), queue.end(), [](const Parcel& x, const Parcel& y) { return x.time < y.time; });
+    Parcel own{before[v], -1.0, std::vector<int>(species)};
+    for (std::size_t s = 0; s < species; ++s) own.copies[s] = std::exchange((*counts[s])[v], 0);
+    queue.insert(queue.begin(), std::move(own));
+    std::fill(stay.begin(), stay.end(), 0);
+    leaving.clear();
+    double sent = 0.0;
+    for (Parcel& p : queue) {
+      const double share = p.area > 0 ? std::clamp((outflow[v] - sent) / p.area, 0.0, 1.0) : 1.0;
+      Parcel out{share * p.area, sent / outflow[v], std::vector<int>(species)};
+      for (std::size_t s = 0; s < species; ++s) {
+        out.copies[s] = share >= 1.0 ? p.copies[s]
+                        : share <= 0.0 ? 0
+                                       : std::binomial_distribution<int>(p.copies[s], share)(random);
+        stay[s] += p.copies[s] - out.copies[s];
+      }
+      sent += out.area;
+      if (out.area > 0.0 || std::any_of(out.copies.begin(), out.copies.end(), [](int c) { return c > 0; }))
+        leaving.push_back(std::move(out));
+    }
+    for (std::size_t s = 0; s < species; ++s) (*counts[s])[v] += stay[s];
+    std::vector<Parcel>().swap(queue);
+    // Each parcel leaves over the edges in proportion to their fluxes.
+    for (const Parcel& p : leaving) {
+      double rest = outflow[v];
+      std::vector<int> left = p.copies;
+      for (const Flux& e : out_edges[v]) {
+        const double q = std::min(1.0, e.area / rest);
+        Parcel part{p.area * e.area / outflow[v], p.time, std::vector<int>(species)};
+        for (std::size_t s = 0; s < species; ++s) {
+          part.copies[s] = q >= 1.0 ? left[s] : std::binomial_distribution<int>(left[s], q)(random);
+          left[s] -= part.copies[s];
+        }
+        rest -= e.area;
+        arrivals[e.to].push_back(std::move(part));
+      }
+    }
+    mergeParcels(arrivals, out_edges[v]);
   }
   return stats;
 }

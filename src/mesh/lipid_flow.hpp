@@ -7,12 +7,16 @@
 // bilayer): on the mesh, edge fluxes F_ij = w_ij (psi_i - psi_j) with the cotangent
 // weights (clipped at kMinWeight so the graph stays connected) and L psi = -g, where
 // g_i = A'_i/D - A_i is the lipid cell i must gain (D = sum A'/sum A, the uniform dilation
-// of the whole membrane, which moves no lipid). Copies move upwind: in each of K sub-steps
-// a copy of cell i crosses to j with probability (F_ij / K) / (A_i + g_i k/K), K chosen so
-// no cell sends more than what it holds per sub-step (fewer sub-steps smear less). A
-// density uniform per unit area stays uniform in expectation (diluted by D), and totals
-// are exact. A sharp edge (a coat) smears by the upwind scheme's numerical diffusion
-// (docs/proteins.md measures it).
+// of the whole membrane, which moves no lipid). The flow is taken as steady over the step
+// and the lipid as passing through each cell in order (plug flow): cells are visited
+// upstream first (psi falls along every flux); a cell sends out F_i = sum_j F_ij of lipid,
+// its own first, then what arrived, in the order it arrived, and each parcel sent leaves
+// over the edges in proportion to their fluxes; a parcel's copies are split binomially
+// by area wherever only part of it moves on. A density uniform per unit area stays
+// uniform in expectation (diluted by D), and totals are exact. Unlike upwind sub-steps,
+// which mix each cell's arrivals with what it holds at every sub-step (numerical
+// diffusion over the whole path), a coat carried across tens of cells keeps its edge to
+// within the mixing where outflows merge (docs/proteins.md measures both).
 #pragma once
 
 #include <span>
@@ -24,7 +28,7 @@
 namespace cortex {
 
 struct LipidFlowStats {
-  int substeps = 0;
+  Index cells_drained = 0;       // cells lipid left (0: nothing flowed)
   double largest_outflow = 0.0;  // of a cell's area, over the whole step
 };
 
