@@ -144,8 +144,10 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
         ++r.constraint_evaluations;
         lambda_ls = jac.transpose().colPivHouseholderQr().solve(g);
       }
-      const double residual = m > 0 ? maxAbs(g - jac.transpose() * lambda_ls) : maxAbs(g);
-      if (residual <= s.tolerance) {
+      const Eigen::VectorXd rest = m > 0 ? Eigen::VectorXd(g - jac.transpose() * lambda_ls) : g;
+      const double residual = maxAbs(rest);
+      if (residual <= s.tolerance &&
+          (s.step_tolerance <= 0 || moveOf(p.precondition(rest).col(0)) <= s.step_tolerance)) {
         r.converged = true;
         r.value = value;
         r.max_residual = residual;
@@ -176,7 +178,8 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
 
   for (r.iterations = 0; r.iterations < s.max_iterations; ++r.iterations) {
     r.max_residual = maxAbs(res);
-    if (r.max_residual <= s.tolerance) {
+    const bool small_residual = r.max_residual <= s.tolerance;
+    if (small_residual && s.step_tolerance <= 0) {
       r.converged = true;
       break;
     }
@@ -211,9 +214,14 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
       d = -frame.project(p.precondition(res).col(0));
       slope = res.dot(d);
       if (!(slope < 0.0)) {
-        r.stop_reason = "no descent direction";
+        r.converged = small_residual;
+        if (!small_residual) r.stop_reason = "no descent direction";
         break;
       }
+    }
+    if (small_residual && moveOf(d) <= s.step_tolerance) {
+      r.converged = true;
+      break;
     }
     double step = std::min(1.0, s.max_move / moveOf(d));
     bool accepted = false;

@@ -60,6 +60,10 @@ inline constexpr const char* kInfeasibleStart = "could not satisfy the constrain
 
 struct ConstrainedLbfgsSettings {
   double tolerance = 1e-3;        // on max_i |r_i|
+  // With step_tolerance > 0, converged also needs the quasi-Newton step from the point
+  // (the move the next iteration would make at full length) within it: a small residual
+  // can still hide a long, soft mode far from its minimum.
+  double step_tolerance = 0.0;
   long max_iterations = 1000;
   int memory = 10;
   // Moves are measured as max_i |du_i| * move_scale_i (move_scale empty: all ones).

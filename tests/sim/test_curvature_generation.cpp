@@ -13,7 +13,10 @@
 // stripe's middle at x − x₀ = 0, ±a/2, ±a, ±2a within 5% of h(0): the theory is linear
 // (slopes ≤ 0.1, errors ~1%), the stripe's edge is resolved by 15 nm cells (a/15 = 4–7),
 // and the fixed y edges are 5.6/λ away or more. Without the coat's generation (H_c → H_p,
-// i.e. the κ_p/(κ_l + κ_p) forgotten) h(0) doubles.
+// i.e. the κ_p/(κ_l + κ_p) forgotten) h(0) doubles. A third, weak coat (the first case at
+// φ = 0.15 and H_p = 0.01 /nm, a 6 nm bulge) drives forces below the membrane's own force scale everywhere:
+// the default relaxation stopped it at 2.0 nm until it also required a small predicted
+// step (shape_relaxation.cpp, kStepTolerance).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -35,6 +38,7 @@ struct StripeCase {
   double kappa_protein;    // pN nm
   double protein_curvature;  // 1/nm
   double half_width;       // nm, of the start region
+  double coverage = 0.5;   // φ of the coat (copies of 2 nm²)
 };
 
 std::string stripeConfig(const StripeCase& c) {
@@ -53,7 +57,7 @@ tension = {}
 area_model = "none"
 [[membrane.species]]
 name = "C"
-density = 250000.0
+density = {}
 region = {{ min = [{}, -1.0, -1.0], max = [{}, 801.0, 1.0] }}
 [membrane.species.curvature]
 area = 2.0
@@ -64,7 +68,8 @@ generates = true
 size = 1100.0
 shape = [1, 1, 1]
 )",
-                     c.tension, 500.0 - c.half_width, 500.0 + c.half_width, c.kappa_protein, c.protein_curvature);
+                     c.tension, c.coverage * 5e5, 500.0 - c.half_width, 500.0 + c.half_width, c.kappa_protein,
+                     c.protein_curvature);
 }
 
 class CurvatureGeneration : public ::testing::TestWithParam<StripeCase> {};
@@ -86,7 +91,7 @@ TEST_P(CurvatureGeneration, CoatedStripeOnATensedPatchBulgesAsLinearTheorySays) 
   for (Index v = 0; v < m.mesh().numVertices(); ++v)
     if (copies[v] > 0) coated += cell[v], total += copies[v];
   const double a = coated / 800.0 / 2.0, phi = 2.0 * static_cast<double>(total) / coated;
-  ASSERT_NEAR(phi, 0.5, 0.01);
+  ASSERT_NEAR(phi, c.coverage, 0.01);
 
   const double kl = 100.0, kp = c.kappa_protein;
   const double kin = 1.0 / ((1.0 - phi) / kl + phi / (kl + kp));
@@ -201,8 +206,11 @@ TEST(CurvatureGenerationLimit, ACoatThinnedByStretchingEndsTheRun) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TwoStripes, CurvatureGeneration,
-                         ::testing::Values(StripeCase{0.02, 100.0, 0.005, 100.0}, StripeCase{0.05, 300.0, -0.004, 60.0}),
-                         [](const auto& info) { return info.index == 0 ? std::string("wide") : std::string("narrow"); });
+                         ::testing::Values(StripeCase{0.02, 100.0, 0.005, 100.0}, StripeCase{0.05, 300.0, -0.004, 60.0},
+                                           StripeCase{0.02, 100.0, 0.01, 100.0, 0.15}),
+                         [](const auto& info) {
+                           return std::string(info.index == 0 ? "wide" : info.index == 1 ? "narrow" : "weak");
+                         });
 
 }  // namespace
 }  // namespace cortex
