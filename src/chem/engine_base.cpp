@@ -286,10 +286,18 @@ void EngineBase::checkLoad(double total, double dt) const {
   const double expected = total * dt;
   if (expected <= event_limit_) return;
   const Load l = load();
+  std::string culprit = "the largest channel is " + l.largest_channel + " at " + fmt::format("{:.3g}", l.largest) +
+                        " events/s: check its rate or diffusion constant";
+  // The channels above are the plain rates; what a membrane species' energies multiply
+  // them by (drift of hops, e^{V} of unbinding) is only in the engine's total.
+  if (l.total < 0.5 * total)
+    culprit = fmt::format("{:.3g} of the {:.3g} events/s come from rates that a membrane species' energies multiply "
+                          "(its potential, pair interaction or curvature energy in hops and unbinding): check their "
+                          "heights; of the plain rates, {}",
+                          total - l.total, total, culprit);
   throw RunError("chemistry: about " + fmt::format("{:.3g}", expected) + " events expected in a window of " +
-                   fmt::format("{:g}", dt) + " s, over the limit of " + fmt::format("{:g}", event_limit_) +
-                   " (chemistry.max_events_per_window); the largest channel is " + l.largest_channel + " at " +
-                   fmt::format("{:.3g}", l.largest) + " events/s: check its rate or diffusion constant");
+                 fmt::format("{:g}", dt) + " s, over the limit of " + fmt::format("{:g}", event_limit_) +
+                 " (chemistry.max_events_per_window); " + culprit);
 }
 
 void EngineBase::eventsOverflow(std::int64_t fired) const {
