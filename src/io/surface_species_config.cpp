@@ -41,6 +41,13 @@ SurfaceInteractionConfig readInteraction(const ConfigReader& r) {
   SurfaceInteractionConfig i;
   r.choice("type", "gaussian", {"gaussian"});
   i.height = r.requiredNumber("height", Range{-10.0, 10.0}, "k_BT");
+  // Expanded to second order, a Gaussian repulsion's kernel is μ₀ − μ₂k² with μ₀, μ₂ > 0:
+  // attractive for waves shorter than πσ, which any mesh finer than σ resolves. Copies
+  // then pile onto single vertices (an attraction's expansion errs the stable way).
+  if (i.height < 0)
+    r.fail("height", "must be >= 0: a repulsive mean field is not modelled (its expansion R = mu0 n + mu2 Lap n, "
+                     "thesis eqs. 3.4-3.5, attracts at the mesh scale and piles copies onto single vertices; "
+                     "docs/proteins.md); for excluded area give the species a footprint");
   i.range = r.requiredNumber("range", Range::positive(), "nm");
   r.finish();
   return i;

@@ -132,6 +132,11 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
   std::string no_range = exampleText();
   replaceOnce(no_range, "name = \"P\"", "name = \"P\"\ninteraction = { height = 0.1, range = 0.0 }");
   expectCheckFails(no_range, "membrane.0.species.0.interaction.range", "");
+  // A repulsion's mean field attracts at the mesh scale (it piled copies 4.6-fold over
+  // Poisson onto a fifth of the vertices of examples/membrane_llps.toml): refused.
+  std::string repulsive = exampleText();
+  replaceOnce(repulsive, "name = \"P\"", "name = \"P\"\ninteraction = { height = -0.1, range = 18.0 }");
+  expectCheckFails(repulsive, "membrane.0.species.0.interaction.height", "repulsive");
 
   std::string unknown = exampleText();
   replaceOnce(unknown, "copies = 5000", "copies = 5000\ncopise = 3");
