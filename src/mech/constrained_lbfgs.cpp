@@ -147,7 +147,7 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
       const Eigen::VectorXd rest = m > 0 ? Eigen::VectorXd(g - jac.transpose() * lambda_ls) : g;
       const double residual = maxAbs(rest);
       if (residual <= s.tolerance &&
-          (s.step_tolerance <= 0 || moveOf(p.precondition(rest).col(0)) <= s.step_tolerance)) {
+          (s.step_tolerance <= 0 || maxAbs(p.precondition(rest).col(0)) <= s.step_tolerance)) {
         r.converged = true;
         r.value = value;
         r.max_residual = residual;
@@ -219,7 +219,7 @@ ConstrainedLbfgsResult minimizeConstrained(ConstrainedProblem& p, Eigen::VectorX
         break;
       }
     }
-    if (small_residual && moveOf(d) <= s.step_tolerance) {
+    if (small_residual && maxAbs(d) <= s.step_tolerance) {
       r.converged = true;
       break;
     }

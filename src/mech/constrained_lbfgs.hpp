@@ -61,8 +61,9 @@ inline constexpr const char* kInfeasibleStart = "could not satisfy the constrain
 struct ConstrainedLbfgsSettings {
   double tolerance = 1e-3;        // on max_i |r_i|
   // With step_tolerance > 0, converged also needs the quasi-Newton step from the point
-  // (the move the next iteration would make at full length) within it: a small residual
-  // can still hide a long, soft mode far from its minimum.
+  // (the move the next iteration would make at full length) within it, max_i |du_i| in
+  // the variables' own units: a small residual can still hide a long, soft mode far from
+  // its minimum.
   double step_tolerance = 0.0;
   long max_iterations = 1000;
   int memory = 10;

@@ -38,9 +38,9 @@ constexpr int kMemory = 10;                // L-BFGS pairs
 constexpr double kConstraintTolerance = 1e-10;  // relative
 constexpr double kLargestNaturalTolerance = 0.1;  // pN
 // Under the natural tolerance a relaxation also goes on until the quasi-Newton step
-// predicts a move below this strain: where the forces driving a shape are smaller than
-// the membrane's pressure scale (a weak coat on a tense patch), the force criterion alone
-// stopped at 60% of the shape (docs/membrane.md).
+// predicts no vertex moving more than this fraction of R = sqrt(A/4π): where the forces
+// driving a shape are smaller than the membrane's pressure scale (a weak coat on a tense
+// patch), the force criterion alone stopped at 60% of the shape (docs/membrane.md).
 constexpr double kStepTolerance = 2e-4;
 
 
@@ -168,7 +168,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     }
     ConstrainedLbfgsSettings inner;
     inner.tolerance = rep.force_tolerance;
-    if (!(s.force_tolerance > 0)) inner.step_tolerance = kStepTolerance;
+    if (!(s.force_tolerance > 0)) inner.step_tolerance = kStepTolerance * radius;
     inner.max_iterations = std::min(iterations_left, kMaxInnerIterations);
     inner.memory = kMemory;
     inner.move_scale = strainScale(geo0, radius);

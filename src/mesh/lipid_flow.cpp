@@ -158,12 +158,14 @@ LipidFlowStats carryWithLipidFlow(const SurfaceMesh& m, std::span<const double> 
     }
     for (std::size_t s = 0; s < species; ++s) (*counts[s])[v] += stay[s];
     std::vector<Parcel>().swap(queue);
-    // Each parcel leaves over the edges in proportion to their fluxes.
+    // Each parcel leaves over the edges in proportion to their fluxes (the last edge takes
+    // what is left, so round-off in the shares cannot lose a copy).
+    const std::vector<Flux>& edges_out = out_edges[v];
     for (const Parcel& p : leaving) {
       double rest = outflow[v];
       std::vector<int> left = p.copies;
-      for (const Flux& e : out_edges[v]) {
-        const double q = std::min(1.0, e.area / rest);
+      for (const Flux& e : edges_out) {
+        const double q = &e == &edges_out.back() ? 1.0 : std::min(1.0, e.area / rest);
         Parcel part{p.area * e.area / outflow[v], p.time, std::vector<int>(species)};
         for (std::size_t s = 0; s < species; ++s) {
           part.copies[s] = q >= 1.0 ? left[s] : std::binomial_distribution<int>(left[s], q)(random);
@@ -173,7 +175,7 @@ LipidFlowStats carryWithLipidFlow(const SurfaceMesh& m, std::span<const double> 
         arrivals[e.to].push_back(std::move(part));
       }
     }
-    mergeParcels(arrivals, out_edges[v]);
+    mergeParcels(arrivals, edges_out);
   }
   return stats;
 }
