@@ -155,8 +155,9 @@ constexpr const char* kUpperCap = "{ min = [0.0, 0.0, 634.0], max = [800.0, 800.
 // those pushes add up to a net force and torque that the relaxation's rigid-body rows hold
 // (docs/membrane.md). The shape is at rest once the normal forces are balanced with those
 // reactions: the reported residual is that quantity, within the tolerance the relaxation
-// converged to (on the upper cap it read 2.4× the tolerance while the rows' reactions were
-// counted as residual), and relaxing again finds the shape at rest (one iteration at most,
+// converged to (it read 1.3-2.0× the tolerance on the upper cap, 4-7× on the side cap,
+// while the rows' reactions were counted as residual), and relaxing again finds the shape
+// at rest (one iteration at most,
 // for a residual that ended just under the tolerance; energy unchanged to 1e-7). Two coats
 // that differ in place, extent and density, and the same vesicle without one: the rows'
 // net force comes from the coat (0.32 and 2.6 pN against 0.004 pN without; asserted > 10×).
