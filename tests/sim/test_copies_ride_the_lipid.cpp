@@ -10,24 +10,12 @@
 #include <numeric>
 
 #include "io/config.hpp"
-#include "mesh/dual_cells.hpp"
+#include "mesh/copy_statistics.hpp"
 #include "sim/simulation.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
 namespace {
-
-double chiSquarePerCell(const Membrane& m, const std::vector<int>& copies) {
-  const std::vector<double> area = dualCellAreas(m.mesh());
-  const double total_area = std::accumulate(area.begin(), area.end(), 0.0);
-  const double total = std::accumulate(copies.begin(), copies.end(), 0.0);
-  double chi2 = 0.0;
-  for (std::size_t v = 0; v < area.size(); ++v) {
-    const double expected = total * area[v] / total_area;
-    chi2 += (copies[v] - expected) * (copies[v] - expected) / expected;
-  }
-  return chi2 / static_cast<double>(area.size());
-}
 
 TEST(CopiesRideTheLipid, ImmobileCopiesStaySpreadByAreaOnADeflatingRemeshedVesicle) {
   const Config config = parseConfig(R"([simulation]
@@ -59,7 +47,7 @@ shape = [4, 4, 4]
   const std::vector<int>& copies = m.speciesCopies()[0];
   EXPECT_EQ(std::accumulate(copies.begin(), copies.end(), 0L), 300000);
   EXPECT_GT(m.mesh().numVertices(), 3000) << "the remesher must have refined for the test to mean anything";
-  const double chi2 = chiSquarePerCell(m, copies);
+  const double chi2 = testing::chiSquarePerCell(m.mesh(), copies);
   std::printf("[ measured ] %d vertices, chi2/cell %.3f\n", static_cast<int>(m.mesh().numVertices()), chi2);
   EXPECT_NEAR(chi2, 1.0, 0.15);
 }
