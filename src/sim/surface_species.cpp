@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "chem/chemistry_model.hpp"
 #include "core/error.hpp"
@@ -16,6 +17,38 @@
 #include "sim/system.hpp"
 
 namespace cortex {
+namespace {
+// `count` copies placed uniformly by area on the vertices with room > 0, none above its
+// room: a multinomial over those vertices drawn as a chain of binomials (work per vertex,
+// not per copy, so 2e9 copies take as long as 2), then what lands above a vertex's room
+// is drawn again over the vertices that still have room. The caller keeps count well
+// under the total room, so few rounds are needed.
+std::vector<int> placeByArea(std::int64_t count, const std::vector<double>& area, std::vector<std::int64_t> room,
+                             RandomStream& random) {
+  const auto n = static_cast<Index>(area.size());
+  std::vector<int> copies(static_cast<std::size_t>(n), 0);
+  for (std::int64_t left = count; left > 0;) {
+    double weight_left = 0.0;
+    for (Index v = 0; v < n; ++v)
+      if (room[v] > 0) weight_left += area[v];
+    std::int64_t unplaced = left, overflow = 0;
+    for (Index v = 0; v < n && unplaced > 0; ++v) {
+      if (room[v] <= 0) continue;
+      const double p = std::min(1.0, area[v] / weight_left);
+      const std::int64_t k = p >= 1.0 ? unplaced : std::binomial_distribution<std::int64_t>(unplaced, p)(random);
+      weight_left -= area[v];
+      unplaced -= k;
+      const std::int64_t kept = std::min(k, room[v]);
+      copies[v] += static_cast<int>(kept);
+      room[v] -= kept;
+      overflow += k - kept;
+    }
+    left = overflow + unplaced;  // unplaced is 0 unless round-off left weight past the last vertex
+  }
+  return copies;
+}
+}  // namespace
+
 void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector<std::unique_ptr<Membrane>>& membranes,
                          std::uint64_t seed, const std::string& source) {
   RandomStream random(seed, StreamId::kSurfaceSpeciesPlacement);
@@ -31,11 +64,10 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
       const std::string where = fmt::format("{}: membrane \"{}\", species \"{}\"", source, mc.name, s.name);
       // Weights: the dual-cell areas of the vertices where copies may start.
       std::vector<char> inside(static_cast<std::size_t>(n));
-      std::vector<double> cumulative(static_cast<std::size_t>(n));
       double sum = 0.0;
       for (Index v = 0; v < n; ++v) {
         inside[v] = !s.region || s.region->contains(membrane.mesh().positions()[v]);
-        cumulative[v] = sum += inside[v] ? area[v] : 0.0;
+        if (inside[v]) sum += area[v];
       }
       if (!(sum > 0.0)) throw InputError(fmt::format("{}: region holds no vertex of the membrane", where));
       std::int64_t count = s.copies;
@@ -45,28 +77,23 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         count = std::llround(expected);
       }
       // With a footprint, the copies of all such species share a vertex's area as the
-      // engine counts them (SpeciesDef::footprint): draws onto a full vertex are drawn again.
-      auto fits = [&](Index v) { return !(s.footprint > 0.0) || covered[v] + s.footprint <= crowdingRoom(area[v]); };
-      if (s.footprint > 0.0) {
-        double room = 0.0;
-        for (Index v = 0; v < n; ++v)
-          if (inside[v]) room += std::floor(std::max(crowdingRoom(area[v]) - covered[v], 0.0) / s.footprint);
-        if (static_cast<double>(count) > 0.99 * room)
-          throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
-                                       "left by the species before it (keep them under 99% full)",
-                                       where, count, room, s.footprint));
+      // engine counts them (SpeciesDef::footprint): a vertex holds at most `room` more.
+      std::vector<std::int64_t> room(static_cast<std::size_t>(n), 0);
+      double places = 0.0;
+      for (Index v = 0; v < n; ++v) {
+        if (!inside[v]) continue;
+        room[v] = s.footprint > 0.0
+                      ? static_cast<std::int64_t>(std::floor(std::max(crowdingRoom(area[v]) - covered[v], 0.0) / s.footprint))
+                      : count;
+        places += static_cast<double>(room[v]);
       }
-      std::vector<int> c(static_cast<std::size_t>(n), 0);
-      for (std::int64_t k = 0; k < count;) {
-        const double target = random.uniform() * sum;
-        auto v = static_cast<Index>(std::upper_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
-        v = std::min<Index>(v, n - 1);
-        while (v > 0 && cumulative[v] == cumulative[v - 1]) --v;  // a vertex of weight 0 (outside the region)
-        if (!fits(v)) continue;
-        ++c[v];
-        if (s.footprint > 0.0) covered[v] += s.footprint;
-        ++k;
-      }
+      if (s.footprint > 0.0 && static_cast<double>(count) > 0.99 * places)
+        throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
+                                     "left by the species before it (keep them under 99% full)",
+                                     where, count, places, s.footprint));
+      std::vector<int> c = placeByArea(count, area, room, random);
+      if (s.footprint > 0.0)
+        for (Index v = 0; v < n; ++v) covered[v] += c[v] * s.footprint;
       names.push_back(s.name);
       copies.push_back(std::move(c));
     }
