@@ -122,6 +122,9 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
     // Multipliers of exact constraints; null where the area or volume is not held exactly.
     const auto orNull = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
     entry["tension"] = orNull(m->equilibrium().tension);
+    // The coat's mean coverage Σ n φ / Σ n (Membrane::coatCoverage): what the curvature
+    // generation sees, and what the thinning check watches.
+    entry["coat_coverage"] = orNull(m->coatCoverage());
     entry["pressure"] = orNull(m->equilibrium().pressure);
     membranes.push_back(entry);
   }

@@ -248,11 +248,14 @@ void Simulation::checkCoats(const std::vector<double>& coverage_before) const {
   for (std::size_t i = 0; i < coverage_before.size(); ++i) {
     const Membrane& m = *system_.membranes()[i];
     const double after = m.coatCoverage();
+    spdlog::debug("t = {:.6g} s: membrane \"{}\": coat coverage {:.4g} -> {:.4g} through the relaxation", system_.time(),
+                  m.name(), coverage_before[i], after);
     if (after < (1.0 - kLargestCoatThinning) * coverage_before[i])
       throw RunError(fmt::format(
           "membrane \"{}\": the relaxation at t = {:.6g} s thinned the coat from a mean coverage of {:.3g} to {:.3g} by "
-          "stretching its cells (more than {:g}%): the copies follow the lipid's flow, but not closely enough for a "
-          "shape change this large, which is out of the model's reach (docs/proteins.md, curvature generation)",
+          "stretching its cells (more than {:g}%): the copies follow the lipid's flow, but the mesh smears the coat's "
+          "edge over about a cell's width: a smaller mesh_size keeps it sharper (docs/proteins.md, curvature "
+          "generation, gives the thinning against mesh_size)",
           m.name(), system_.time(), coverage_before[i], after, 100.0 * kLargestCoatThinning));
   }
 }
