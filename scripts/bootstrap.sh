@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev
           libhdf5-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-          librandom123-dev python3-numpy python3-h5py python3-matplotlib
+          librandom123-dev libsuitesparse-dev python3-numpy python3-h5py python3-matplotlib
           python3-paraview xvfb xauth ffmpeg openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

@@ -85,6 +85,12 @@ void writeMembrane(h5::File& f, const std::string& g, const MembraneState& s) {
   f.write(g + "/triangles", tris, {tris.size() / 3, 3});
   f.write(g + "/fixed", std::vector<std::int8_t>(s.fixed.begin(), s.fixed.end()));
   f.write(g + "/vertex_area0", s.material.vertex_area0);
+  if (!s.metric.positions.empty()) {
+    f.write(g + "/relaxation_metric", s.metric.positions, {s.metric.positions.size() / 3, 3});
+    f.setAttribute(g + "/relaxation_metric", "kappa", s.metric.kappa);
+    f.setAttribute(g + "/relaxation_metric", "shift", s.metric.shift);
+    f.setAttribute(g + "/relaxation_metric", "outer_steps", s.metric.outer_steps);
+  }
   MembraneState::fields(s, AttributeWriter{f, g});
   if (s.remeshing) {
     const SizingParameters& z = s.remeshing->sizing;
@@ -106,6 +112,12 @@ MembraneState readMembrane(const h5::File& f, const std::string& g, const std::s
   const std::vector<std::int8_t> fixed = f.readInt8(g + "/fixed");
   s.fixed.assign(fixed.begin(), fixed.end());
   s.material.vertex_area0 = f.readDoubles(g + "/vertex_area0");
+  if (f.exists(g + "/relaxation_metric")) {  // absent before any relaxation (and in older checkpoints)
+    s.metric.positions = f.readDoubles(g + "/relaxation_metric");
+    s.metric.kappa = f.attributeDouble(g + "/relaxation_metric", "kappa");
+    s.metric.shift = f.attributeDouble(g + "/relaxation_metric", "shift");
+    s.metric.outer_steps = f.attributeInt64(g + "/relaxation_metric", "outer_steps");
+  }
   MembraneState::fields(s, AttributeReader{f, g});
   if (f.exists(g + "/remesh_sizing")) {
     const std::vector<double> z = f.readDoubles(g + "/remesh_sizing");
@@ -114,6 +126,8 @@ MembraneState readMembrane(const h5::File& f, const std::string& g, const std::s
     rs.sizing.flat_size = z[0], rs.sizing.min_size = z[1], rs.sizing.max_size = z[2], rs.sizing.tolerance = z[3];
     s.remeshing = rs;
   }
+  if (!s.metric.positions.empty() && s.metric.positions.size() != 3 * s.mesh.positions.size())
+    throw InputError(fmt::format("{}: {}/relaxation_metric does not match the vertex count", file_name, g));
   if (s.fixed.size() != s.mesh.positions.size() || s.material.vertex_area0.size() != s.mesh.positions.size())
     throw InputError(fmt::format("{}: {}: per-vertex arrays do not match the vertex count", file_name, g));
   const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");

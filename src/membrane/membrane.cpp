@@ -85,6 +85,7 @@ RemeshStats Membrane::remesh(const RemeshSettings& settings) {
   endLipidFlow();
   VertexPayload payload{&fixed_, speciesCountPointers(), {&material_.vertex_area0}};
   const RemeshStats stats = cortex::remesh(mesh_, payload, settings);
+  relaxation_metric_ = {};  // built on the old connectivity
   // Rebuilt from its triangle list, the half-edge layout is the one a checkpoint restores
   // (edits leave it in edit order), so a resumed run remeshes exactly as this one.
   mesh_ = SurfaceMesh::fromSoup({mesh_.positions(), mesh_.triangles()}, name_);

@@ -79,6 +79,17 @@ struct MembraneEquilibrium {
   double strain_since_remesh = 0.0;
 };
 
+// The Sobolev metric the shape relaxation last factorized (shape_relaxation.cpp): the
+// positions it was built at, its scale κ and shift ε, and the outer steps relaxed under
+// it since. Kept from window to window and in checkpoints, so a resumed run factorizes
+// the same metric, not one at its own positions; remeshing clears it.
+struct RelaxationMetric {
+  std::vector<double> positions;  // x, y, z per vertex, nm; empty: none factorized
+  double kappa = 0.0;             // pN nm
+  double shift = 0.0;             // 1/nm^2
+  std::int64_t outer_steps = 0;
+};
+
 // Reference state fixed when the membrane is created (and restored from checkpoints).
 struct MembraneMaterial {
   double initial_area = 0.0;
@@ -117,6 +128,8 @@ class Membrane final : public Body {
   // the sphere of the target area, else the initial volume.
   double targetVolume(double t) const;
 
+  RelaxationMetric& relaxationMetric() { return relaxation_metric_; }
+  const RelaxationMetric& relaxationMetric() const { return relaxation_metric_; }
   const MembraneEquilibrium& equilibrium() const { return equilibrium_; }
   void setEquilibrium(const MembraneEquilibrium& e) { equilibrium_ = e; }
 
@@ -180,6 +193,7 @@ class Membrane final : public Body {
   std::vector<std::vector<int>*> speciesCountPointers();  // one per species, for the mesh's carriers
   std::optional<ProteinCoat> coat_;
   MembraneEquilibrium equilibrium_;
+  RelaxationMetric relaxation_metric_;
   MeshGeometry cache_;
   std::uint64_t cache_version_ = 0;
   bool cache_valid_ = false;

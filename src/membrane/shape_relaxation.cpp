@@ -140,17 +140,22 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     MeshGeometry geo0;
     geo0.compute(m.topology(), x0.data());
     const double radius = std::sqrt(geo0.area / (4.0 * constants::kPi));
-    // Remeshing, the only change of the vertex count, bumps the connectivity version.
-    if (!warm.factored || warm.connectivity != m.connectivityVersion() ||
-        warm.outer_since_factoring >= kRefactorInterval) {
+    // The metric is refactorized every kRefactorInterval outer steps, across windows:
+    // relaxations that barely move the shape share one. Remeshing, the only change of the
+    // vertex count, clears it and bumps the connectivity version.
+    RelaxationMetric& metric = m.relaxationMetric();
+    if (metric.positions.size() != x0.size() || metric.outer_steps >= kRefactorInterval) {
+      metric = {x0, scales.kappa, kShift / (radius * radius), 0};
+      warm.factored = false;
+    }
+    if (!warm.factored || warm.connectivity != m.connectivityVersion()) {
       const ScopedTimer timer{rep.factor_seconds};
-      precond.build(scalarMeshOperators(x0.data(), n, m.topology().triangles), scales.kappa, kShift / (radius * radius),
-                    m.fixedVertices());
+      precond.build(scalarMeshOperators(metric.positions.data(), n, m.topology().triangles), metric.kappa,
+                    metric.shift, m.fixedVertices());
       ++rep.factorizations;
       warm.factored = true;
       warm.forgetRigidColumns();
       warm.connectivity = m.connectivityVersion();
-      warm.outer_since_factoring = 0;
     }
     NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm);
     if (scales.area_stiffness > 0 || (closed && scales.volume_stiffness > 0)) {
@@ -175,7 +180,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     inner.max_move = kStepStrain;
     inner.max_total_move = kRefreshStrain;
     inner.constraint_tolerance = kConstraintTolerance;
-    ++warm.outer_since_factoring;
+    ++metric.outer_steps;
     Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
     // Continuation: targets the restoration cannot reach from here (a sphere asked for a
     // lower reduced volume: the area and volume gradients are parallel), or only by a

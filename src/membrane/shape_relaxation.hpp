@@ -43,11 +43,13 @@ namespace cortex {
 // iterations.) newWindow() keeps only the ordering, a function of the connectivity
 // alone, so what a window computes does not depend on earlier windows and a resumed run
 // relaxes exactly as an uninterrupted one.
+// What a caller keeps between relaxations of one membrane: the factorization of the
+// membrane's RelaxationMetric, and derived columns. A cache: rebuilt from the metric's
+// positions when missing (a resumed run), so it never changes a result.
 struct ShapeRelaxationWarmStart {
   SobolevPreconditioner preconditioner;
   bool factored = false;
   std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() it was factored for
-  int outer_since_factoring = 0;
   // P^-1 of the rigid-mode rows under this factorization (ConstrainedProblem::keptLinearW),
   // and the rows they were computed for: six solves per outer step saved while the rows
   // only turn a little with the normals.
@@ -57,10 +59,9 @@ struct ShapeRelaxationWarmStart {
     rigid_w.resize(0, 0);
     rigid_rows.resize(0, 0);
   }
-  void newWindow() {
-    factored = false;
-    forgetRigidColumns();
-  }
+  // The rigid columns follow the rows of the window's first shape; the factorization
+  // stays (a resumed run rebuilds the same one from the RelaxationMetric).
+  void newWindow() { forgetRigidColumns(); }
 };
 
 struct ShapeRelaxationSettings {

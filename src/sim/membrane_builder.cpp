@@ -78,6 +78,7 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     membrane->setMaterial(restored->material);
     membrane->setRemeshTotals(restored->remesh_totals);
     membrane->setEquilibrium(restored->equilibrium);
+    membrane->relaxationMetric() = restored->metric;
     std::vector<std::string> names;
     for (const SurfaceSpeciesConfig& sp : c.species) names.push_back(sp.name);
     if (restored->species != names)
@@ -106,6 +107,7 @@ MembraneState membraneState(const Membrane& m) {
   s.remesh_totals = m.remeshTotals();
   s.remeshing = m.remeshing();
   s.equilibrium = m.equilibrium();
+  s.metric = m.relaxationMetric();
   s.species = m.speciesNames();
   s.species_copies = m.speciesCopies();
   return s;

@@ -60,6 +60,7 @@ struct MembraneState {
   std::vector<std::vector<int>> species_copies;
 
   MembraneEquilibrium equilibrium;
+  RelaxationMetric metric;
 
   template <class Self, class F>
   static void fields(Self& s, F&& f) {
