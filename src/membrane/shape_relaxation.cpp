@@ -129,7 +129,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   ConstrainedLbfgsResult last;
   ShapeRelaxationWarmStart own_start;
   ShapeRelaxationWarmStart& warm = s.warm_start ? *s.warm_start : own_start;
-  LbfgsMemory memory;
+  LbfgsMemory& memory = warm.memory;
   SobolevPreconditioner& precond = warm.preconditioner;
   const long solves_before = precond.solves();
 
@@ -149,6 +149,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       warm.factored = false;
     }
     if (!warm.factored || warm.connectivity != m.connectivityVersion()) {
+      if (warm.connectivity != m.connectivityVersion()) memory.clear();  // pairs of other vertices
       const ScopedTimer timer{rep.factor_seconds};
       precond.build(scalarMeshOperators(metric.positions.data(), n, m.topology().triangles), metric.kappa,
                     metric.shift, m.fixedVertices());

@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <string>
 
+#include "mech/constrained_lbfgs.hpp"
 #include "mech/force_field.hpp"
 #include "mech/minimizer.hpp"
 #include "membrane/membrane.hpp"
@@ -54,14 +55,21 @@ struct ShapeRelaxationWarmStart {
   // and the rows they were computed for: six solves per outer step saved while the rows
   // only turn a little with the normals.
   Eigen::MatrixXd rigid_w, rigid_rows;
+  // The L-BFGS pairs of the last relaxation: a membrane relaxed again in the same window
+  // (in turn with filaments, docs/coupling.md) starts with the curvature it learnt.
+  LbfgsMemory memory;
 
   void forgetRigidColumns() {
     rigid_w.resize(0, 0);
     rigid_rows.resize(0, 0);
   }
-  // The rigid columns follow the rows of the window's first shape; the factorization
-  // stays (a resumed run rebuilds the same one from the RelaxationMetric).
-  void newWindow() { forgetRigidColumns(); }
+  // The rigid columns and the L-BFGS pairs start afresh with every window, where a
+  // resumed run starts; the factorization stays (a resumed run rebuilds the same one from
+  // the RelaxationMetric).
+  void newWindow() {
+    forgetRigidColumns();
+    memory.clear();
+  }
 };
 
 struct ShapeRelaxationSettings {
