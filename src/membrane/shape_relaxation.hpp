@@ -42,7 +42,7 @@ namespace cortex {
 // pairs. Membranes pushed by filaments are relaxed several times per window
 // (Simulation::relaxByBody), each time a little away from the last: the pairs cut their
 // force evaluations by 16-24% on three coupled examples (docs/coupling.md; an earlier
-// build, before the step criterion, measured no gain). Everything here is a cache of
+// build had measured no gain). Everything here is a cache of
 // state a checkpoint holds or of the window so far: newWindow() drops what a resumed run
 // could not rebuild, and a missing factorization is rebuilt from the metric's positions.
 struct ShapeRelaxationWarmStart {
