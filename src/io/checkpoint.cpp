@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 #include "core/error.hpp"
@@ -126,8 +128,17 @@ MembraneState readMembrane(const h5::File& f, const std::string& g, const std::s
     rs.sizing.flat_size = z[0], rs.sizing.min_size = z[1], rs.sizing.max_size = z[2], rs.sizing.tolerance = z[3];
     s.remeshing = rs;
   }
-  if (!s.metric.positions.empty() && s.metric.positions.size() != 3 * s.mesh.positions.size())
-    throw InputError(fmt::format("{}: {}/relaxation_metric does not match the vertex count", file_name, g));
+  if (!s.metric.positions.empty()) {
+    if (s.metric.positions.size() != 3 * s.mesh.positions.size())
+      throw InputError(fmt::format("{}: {}/relaxation_metric does not match the vertex count", file_name, g));
+    const bool finite = std::all_of(s.metric.positions.begin(), s.metric.positions.end(),
+                                    [](double x) { return std::isfinite(x); });
+    if (!finite || !(s.metric.kappa > 0.0) || !(s.metric.shift > 0.0) || !std::isfinite(s.metric.kappa) ||
+        !std::isfinite(s.metric.shift) || s.metric.outer_steps < 0)
+      throw InputError(fmt::format("{}: {}/relaxation_metric is damaged (positions, kappa or shift not finite "
+                                   "and positive)",
+                                   file_name, g));
+  }
   if (s.fixed.size() != s.mesh.positions.size() || s.material.vertex_area0.size() != s.mesh.positions.size())
     throw InputError(fmt::format("{}: {}: per-vertex arrays do not match the vertex count", file_name, g));
   const std::vector<std::int64_t> r = f.readInt64(g + "/remesh_totals");

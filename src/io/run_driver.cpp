@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <omp.h>
+#include <Eigen/Core>
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -163,6 +164,10 @@ void logThroughput(const System& system, double wall, bool resumed) {
 RunOutcome runSimulation(const RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   omp_set_num_threads(std::max(1, request.threads));
+  // Eigen's dense products would otherwise split their sums over the OpenMP threads, and
+  // results would change in the last digits with --threads (cortex parallelizes its own
+  // loops in a fixed order instead).
+  Eigen::setNbThreads(1);
   const bool resume = !request.resume_dir.empty();
   std::vector<std::string> overrides = request.overrides;
   if (request.seed) overrides.push_back(fmt::format("simulation.seed={}", *request.seed));
