@@ -163,6 +163,9 @@ void logThroughput(const System& system, double wall, bool resumed) {
 
 RunOutcome runSimulation(const RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();
+  // From the start: a SIGTERM during a long set-up stops the run after its first window
+  // and checkpoint (exit 3), as documented, instead of killing it.
+  const StopSignals stop;
   omp_set_num_threads(std::max(1, request.threads));
   // Eigen's dense products would otherwise split their sums over the OpenMP threads, and
   // results would change in the last digits with --threads (cortex parallelizes its own
@@ -221,7 +224,6 @@ RunOutcome runSimulation(const RunRequest& request) {
   const bool live = !request.quiet && isatty(STDERR_FILENO);
   ProgressReporter progress(config.simulation.end_time, live, request.quiet ? 0.0 : request.progress_interval,
                             system->counters);
-  const StopSignals stop;
   OutputObserver observer(outdir, header, writer, progress, &stop,
                           {config.simulation.seed, request.threads, 0.0});
   Simulation simulation(*system, config.simulation, config.mechanics, observer);

@@ -172,6 +172,23 @@ TEST(Faults, SigtermStopsAfterACheckpointAndResumesBitIdentically) {
   }
 }
 
+// SIGTERM during the set-up (here meshing a 1 µm vesicle at 16 nm, which takes longer
+// than the 0.15 s before the signal): the handler is installed before anything else, so
+// the run still stops after its first relaxation and checkpoint with exit 3. (It was
+// installed after the set-up, and such a signal killed the run: exit 143, no output.)
+TEST(Faults, SigtermDuringTheSetUpStopsAfterTheFirstCheckpoint) {
+  TempDir dir;
+  const fs::path out = dir / "stopped";
+  const pid_t pid = spawnCortex({"run", CORTEX_SOURCE_DIR "/examples/vesicle_osmotic_shrink.toml", "-o", out.string(),
+                                 "-q", "--threads", "1", "--set", "membrane.0.mesh_size=16"});
+  ASSERT_GT(pid, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));
+  kill(pid, SIGTERM);
+  ASSERT_EQ(waitFor(pid), 3);
+  EXPECT_TRUE(fs::exists(out / "checkpoint.h5"));
+  EXPECT_NE(readFile(out / "cortex.log").find("stopped by signal 15"), std::string::npos);
+}
+
 // A second signal stops at once (the default action), without waiting for the window.
 TEST(Faults, SecondSignalStopsAtOnce) {
   TempDir dir;
