@@ -186,6 +186,10 @@ class ChemistryEngine {
   // its start, or counted while it runs) stops with a RunError instead of running for
   // hours: rates or diffusion constants far too large for the window. Default 1e9.
   virtual void setEventLimit(double max) = 0;
+  // The same refusal now, for an advance of `window` s from the current state, with every
+  // factor a membrane species' energies put on its hops and unbinding: what `cortex check`
+  // tells before a run starts. Throws RunError with the advance's message.
+  virtual void checkLoad(double window) const = 0;
 
   virtual std::int64_t events() const = 0;
   // Events fired per reaction (index as in the model); diffusion hops counted apart.

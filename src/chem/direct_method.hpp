@@ -26,6 +26,7 @@ class DirectMethodEngine final : public EngineBase {
   void refreshSubvolume(Index i) override { recompute(i); }
   void relaidOut() override;
   double sum() const;
+  double totalRate() const override { return sum(); }
   void fire(std::size_t channel);
 
   std::vector<Index> edge_source_;  // per directed edge

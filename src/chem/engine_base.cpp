@@ -245,7 +245,9 @@ void EngineBase::checkRateFactor(Index reaction, Index subvolume, double factor)
 
 RateFactors EngineBase::claimRateFactors(const ReactionRange& range) {
   for (std::size_t k = 0; k < ranges_.size(); ++k) {
-    if (ranges_[k].begin != range.begin || ranges_[k].end != range.end) continue;
+    // The owner tells apart two empty ranges at the same place (a model without
+    // reactions of its own beside filaments whose types react with nothing).
+    if (ranges_[k].begin != range.begin || ranges_[k].end != range.end || ranges_[k].owner != range.owner) continue;
     if (claimed_[k]) throw std::logic_error("rate factors of \"" + ranges_[k].owner + "\" are claimed already");
     claimed_[k] = 1;
     return RateFactors(this, ranges_[k]);

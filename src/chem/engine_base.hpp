@@ -25,6 +25,7 @@ class EngineBase : public ChemistryEngine {
   ChemistryState state() const override;
   Load load() const override;
   void setEventLimit(double max) override { event_limit_ = max; }
+  void checkLoad(double window) const override { checkLoad(totalRate(), window); }
   void restore(const ChemistryState& state) override;
   // Stores the confinement, relocates stranded copies, then lets the engine recompute
   // the subvolumes whose rates changed (refreshSubvolume).
@@ -62,6 +63,8 @@ class EngineBase : public ChemistryEngine {
   [[noreturn]] void eventsOverflow(std::int64_t fired) const;
   double event_limit_ = 1e9;
 
+  // The total propensity (events/s) as the engine keeps it, energies' factors included.
+  virtual double totalRate() const = 0;
   // Recomputes every propensity of subvolume i from copies_, the factors and the rates.
   virtual void refreshSubvolume(Index i) = 0;
   // The subvolumes were laid out anew (setSurface): resize and recompute everything.

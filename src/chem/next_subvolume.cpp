@@ -80,6 +80,12 @@ void NextSubvolumeEngine::refresh(Index i) {
   v.diffusion = diffusionSum(i);
 }
 
+double NextSubvolumeEngine::totalRate() const {
+  double sum = 0.0;
+  for (const Subvolume& v : sub_) sum += total(v);
+  return sum;
+}
+
 double NextSubvolumeEngine::diffusionSum(Index i) const {
   const int* n = &copies_[static_cast<std::size_t>(i) * S_];
   double hops = 0.0;

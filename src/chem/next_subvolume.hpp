@@ -56,6 +56,7 @@ class NextSubvolumeEngine final : public EngineBase {
   void interactionMoved(Index s, Index a, Index b);
   void refreshSubvolume(Index i) override { refresh(i); }
   void relaidOut() override;
+  double totalRate() const override;
   // EngineBase::hopOutOf from the record the loop has at hand.
   double hopOutOf(Index i, Index s) const {
     return weighted(s) ? hopOut(i, s) : sub_[i].degree * hopRate(s);

@@ -99,16 +99,18 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
   }
 }
 
-// Whether reaction `def` takes copies of surface species `species` off the surface (no
-// other surface species changes) in any way but one copy into 3D species only.
+// Whether reaction `def` takes copies of surface species `species` off the surface (it
+// makes no surface species) in any way but one copy into 3D species only.
 bool desorbsSeveral(const ReactionDef& def, Index species, const std::vector<SpeciesDef>& all) {
   std::map<Index, int> net;  // surface species' net changes
   for (const Stoichiometry& x : def.reactants)
     if (all[x.species].surface >= 0) net[x.species] -= x.count;
   for (const Stoichiometry& x : def.products)
     if (all[x.species].surface >= 0) net[x.species] += x.count;
+  // A surface product makes it a reaction on the membrane (mass action); without one,
+  // the copies taken off leave it.
   for (const auto& [other, change] : net)
-    if (other != species && change != 0) return false;
+    if (change > 0) return false;
   if (!(net[species] < 0)) return false;
   const bool one = def.reactants.size() == 1 && def.reactants.front().count == 1;
   return !one;

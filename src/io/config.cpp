@@ -174,10 +174,15 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
     r.fail("min_size", fmt::format("({:g} nm) must not exceed mesh_size ({:g} nm)", m.min_size, m.mesh_size));
   if (m.mesh_size > 0 && m.max_size < m.mesh_size)
     r.fail("max_size", fmt::format("({:g} nm) must not be below mesh_size ({:g} nm)", m.max_size, m.mesh_size));
+  // A schedule is linear between its points: all of them > 0 keeps it > 0 throughout.
   for (const SurfaceSpeciesConfig& sp : m.species)
-    if (sp.curvature && !(m.mechanics.bending.modulus.at(0.0) > 0.0))
-      r.fail("bending_modulus", fmt::format("must be > 0: species \"{}\" senses curvature, which needs the "
-                                            "lipid's κ (thesis eq. 3.19)", sp.name));
+    for (const auto& [t, kappa] : m.mechanics.bending.modulus.points())
+      if (sp.curvature && !(kappa > 0.0))
+        r.fail("bending_modulus", fmt::format("must be > 0{}: species \"{}\" senses curvature, which needs the "
+                                              "lipid's κ (thesis eq. 3.19)",
+                                              m.mechanics.bending.modulus.isConstant() ? ""
+                                                                                       : fmt::format(" (at t = {:g} s)", t),
+                                              sp.name));
   r.finish();
   return m;
 }

@@ -93,15 +93,11 @@ void refuseFrozenOverrides(const std::vector<std::string>& overrides) {
 // anything is written (the engine refuses the same at every window, with a RunError).
 void checkChemistryLoad(const System& system, const Config& config) {
   if (!system.chemistry()) return;
-  const ChemistryEngine::Load load = system.chemistry()->load();
-  const double expected = load.total * config.simulation.chemistry_window;
-  const double limit = config.chemistry->max_events_per_window;
-  if (!(expected <= limit))
-    throw InputError(fmt::format("{}: the chemistry would fire about {:.3g} events per chemistry_window of {:g} s, "
-                                 "over the limit of {:g} (chemistry.max_events_per_window); its largest channel is "
-                                 "{} at {:.3g} events/s: check its rate or diffusion constant",
-                                 config.source, expected, config.simulation.chemistry_window, limit,
-                                 load.largest_channel, load.largest));
+  try {
+    system.chemistry()->checkLoad(config.simulation.chemistry_window);
+  } catch (const RunError& e) {
+    throw InputError(fmt::format("{}: {}", config.source, e.what()));
+  }
 }
 
 // The run's name: what makes it (its first effective config, seed, version).

@@ -40,10 +40,12 @@ CurvatureSensingConfig readCurvature(const ConfigReader& r) {
 SurfaceInteractionConfig readInteraction(const ConfigReader& r) {
   SurfaceInteractionConfig i;
   r.choice("type", "gaussian", {"gaussian"});
-  i.height = r.requiredNumber("height", Range{-10.0, 10.0}, "k_BT");
   // Expanded to second order, a Gaussian repulsion's kernel is μ₀ − μ₂k² with μ₀, μ₂ > 0:
   // attractive for waves shorter than πσ, which any mesh finer than σ resolves. Copies
   // then pile onto single vertices (an attraction's expansion errs the stable way).
+  // Read over both signs so that a repulsion gets that reason, not only a range.
+  i.height = r.requiredNumber("height", Range{}, "k_BT");
+  if (i.height > 10.0) r.fail("height", fmt::format("must be in [0, 10] k_BT, got {:g}", i.height));
   if (i.height < 0)
     r.fail("height", "must be >= 0: a repulsive mean field is not modelled (its expansion R = mu0 n + mu2 Lap n, "
                      "thesis eqs. 3.4-3.5, attracts at the mesh scale and piles copies onto single vertices; "

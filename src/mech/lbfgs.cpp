@@ -1,5 +1,6 @@
-// Limited-memory BFGS with the two-loop recursion (Nocedal & Wright 2006, alg. 7.4) and
-// the initial Hessian scaled by s.y / y.y of the latest pair.
+// Limited-memory BFGS with the two-loop recursion (Nocedal & Wright 2006, alg. 7.4). The
+// initial inverse Hessian is the settings' preconditioner when given, else the identity
+// scaled by s.y / y.y of the latest pair.
 #include <deque>
 #include <vector>
 
@@ -14,14 +15,21 @@ struct CurvaturePair {
   double rho;
 };
 
-Eigen::VectorXd twoLoopDirection(const Eigen::VectorXd& g, const std::deque<CurvaturePair>& pairs) {
+Eigen::VectorXd twoLoopDirection(const Eigen::VectorXd& g, const std::deque<CurvaturePair>& pairs,
+                                 const MinimizerSettings& settings) {
   Eigen::VectorXd q = -g;
   std::vector<double> alpha(pairs.size());
   for (std::size_t i = pairs.size(); i-- > 0;) {
     alpha[i] = pairs[i].rho * pairs[i].s.dot(q);
     q -= alpha[i] * pairs[i].y;
   }
-  if (!pairs.empty()) q *= pairs.back().s.dot(pairs.back().y) / pairs.back().y.squaredNorm();
+  if (settings.inverse_hessian) {
+    Eigen::VectorXd z;
+    settings.inverse_hessian(q, z);
+    q.swap(z);
+  } else if (!pairs.empty()) {
+    q *= pairs.back().s.dot(pairs.back().y) / pairs.back().y.squaredNorm();
+  }
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const double beta = pairs[i].rho * pairs[i].y.dot(q);
     q += (alpha[i] - beta) * pairs[i].s;
@@ -46,15 +54,16 @@ MinimizationResult lbfgs(Objective& f, Eigen::VectorXd& x, const MinimizerSettin
       break;
     }
     if (s.progress) s.progress({r.iterations, r.max_force, s.force_tolerance});
-    Eigen::VectorXd d = twoLoopDirection(g, pairs);
+    Eigen::VectorXd d = twoLoopDirection(g, pairs, s);
     double slope = g.dot(d);
     if (slope >= 0.0) {  // memory lost positive definiteness: start over
       pairs.clear();
-      d = -g;
-      slope = -g.squaredNorm();
+      d = twoLoopDirection(g, pairs, s);
+      slope = g.dot(d);
     }
     const double cap = s.max_step / maxAbs(d);
-    const double initial = pairs.empty() ? cap : std::min(1.0, cap);
+    // A preconditioned direction has a length: its unit step is the model's minimum.
+    const double initial = pairs.empty() && !s.inverse_hessian ? cap : std::min(1.0, cap);
     const LineSearchResult ls = wolfeLineSearch(f, x, energy, slope, d, initial, cap, params, x_new, g_new);
     if (!ls.ok) {
       if (pairs.empty()) {

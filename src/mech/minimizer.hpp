@@ -10,8 +10,9 @@
 namespace cortex {
 
 // kAuto: each membrane by its shape relaxation (membrane/shape_relaxation.hpp), then the
-// filaments by conjugate gradients; kConjugateGradient, kLbfgs: everything at once over
-// all coordinates (membranes need penalty area and volume terms then).
+// filaments by L-BFGS on their Hessian model (filament/filament_preconditioner.hpp);
+// kConjugateGradient, kLbfgs: everything at once over all coordinates, unpreconditioned
+// (membranes need penalty area and volume terms then).
 enum class MinimizerKind { kAuto, kConjugateGradient, kLbfgs };
 
 // Where a minimization stands, for progress reports during long relaxations.
@@ -32,6 +33,9 @@ struct MinimizerSettings {
   long max_iterations = 100000;
   double max_step = 20.0;        // nm: largest move of any coordinate in one line search
   int lbfgs_memory = 10;
+  // L-BFGS only, optional: z = H0 r, its initial inverse Hessian (a preconditioner). Without
+  // it, the identity scaled by the latest curvature pair.
+  std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z)> inverse_hessian;
   MinimizerProgressCallback progress;  // optional
 };
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "filament/filament_preconditioner.hpp"
 #include "interact/membrane_crossing.hpp"
 #include "membrane/shape_relaxation.hpp"
 #include "mesh/mesh_quality.hpp"
@@ -207,6 +208,17 @@ MinimizationResult Simulation::relaxFilaments() {
                                3 * net->numPoints());
     Eigen::VectorXd x = system_.coordinates();
     MinimizerSettings filament_settings = mech_;
+    // L-BFGS on the network's own Hessian model (filament_preconditioner.hpp): 2.5-9x fewer
+    // force evaluations than conjugate gradients where membranes push (docs/filaments.md).
+    filament_settings.kind = MinimizerKind::kLbfgs;
+    FilamentPreconditioner model;
+    std::vector<char> frozen(static_cast<std::size_t>(net->numPoints()));
+    net->frozen(frozen.data());
+    if (model.build(net->layout(), net->config().types, x, frozen))
+      filament_settings.inverse_hessian = [&model](const Eigen::VectorXd& r, Eigen::VectorXd& z) { model.apply(r, z); };
+    else
+      spdlog::debug("t = {:.6g} s: the filaments' Hessian model did not factorize; relaxing them unpreconditioned",
+                    system_.time());
     filament_settings.progress = progressOf("filaments");
     const long evaluations_before = system_.forceField().forceEvaluations();
     const MinimizationResult f = minimize(filaments, x, filament_settings);

@@ -82,8 +82,12 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
       double places = 0.0;
       for (Index v = 0; v < n; ++v) {
         if (!inside[v]) continue;
+        // Room past twice the copies changes neither the placement nor the 99% rule below,
+        // and the cap keeps a tiny footprint's quotient within the integers.
         room[v] = s.footprint > 0.0
-                      ? static_cast<std::int64_t>(std::floor(std::max(crowdingRoom(area[v]) - covered[v], 0.0) / s.footprint))
+                      ? static_cast<std::int64_t>(std::min(
+                            std::floor(std::max(crowdingRoom(area[v]) - covered[v], 0.0) / s.footprint),
+                            2.0 * static_cast<double>(count) + 1.0))
                       : count;
         places += static_cast<double>(room[v]);
       }
@@ -163,6 +167,17 @@ void SurfaceSpeciesFeedback::update(System& system) {
       throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": its species cannot live on this mesh: {}",
                                  system.time(), membrane.name(), e.what()));
     }
+    // The engine refuses energies that are not finite (std::invalid_argument); here that
+    // is a parameter's doing, said with the species and the block that made them.
+    const auto feed = [&](std::size_t j, const char* block, auto&& set) {
+      try {
+        set();
+      } catch (const std::invalid_argument& e) {
+        throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\", species \"{}\": its {} gives rates that are not "
+                                   "finite ({}); check that block's parameters (sizes, heights, ranges, moduli)",
+                                   system.time(), membrane.name(), s.configs[j].name, block, e.what()));
+      }
+    };
     const std::vector<std::vector<double>> potential = potentials(s, membrane);
     std::vector<double> curvature;  // per vertex, 1/nm, once a species senses it
     for (std::size_t j = 0; j < s.species.size(); ++j) {
@@ -181,13 +196,14 @@ void SurfaceSpeciesFeedback::update(System& system) {
                                             membrane.mechanics().bending.estimator);
           setSensingRows(c, membrane, cells.graph, curvature, system.time(), interaction);
         }
-        engine_.setSurfaceInteraction(s.species[j], std::move(interaction));
+        feed(j, c.curvature ? "curvature or interaction" : "interaction",
+             [&] { engine_.setSurfaceInteraction(s.species[j], std::move(interaction)); });
         continue;
       }
       if (potential[j].empty()) continue;
       const DriftFactors drift = driftFactors(cells.graph, potential[j], c.drift);
       closed_.drift += drift.closed_edges;
-      engine_.setSurfaceDrift(s.species[j], drift.factors);
+      feed(j, "potential", [&] { engine_.setSurfaceDrift(s.species[j], drift.factors); });
     }
     for (std::size_t j = 0; j < s.species.size(); ++j)
       for (const CrossInteractionConfig& x : s.configs[j].cross) {
@@ -195,7 +211,8 @@ void SurfaceSpeciesFeedback::update(System& system) {
             std::find_if(s.configs.begin(), s.configs.end(), [&](const auto& c) { return c.name == x.species; }) -
             s.configs.begin());
         PairKernel kernel = pairKernel(cells.graph, gaussianPairMoments(x.interaction.height, x.interaction.range));
-        engine_.setSurfaceCoupling(s.species[j], s.species[other], std::move(kernel.self), std::move(kernel.pair));
+        feed(j, "cross_interaction",
+             [&] { engine_.setSurfaceCoupling(s.species[j], s.species[other], std::move(kernel.self), std::move(kernel.pair)); });
       }
     setUnbindingFactors(static_cast<Index>(k), potential, n, system.time());
   }

@@ -78,7 +78,13 @@ System::System(const Config& config, const SystemState* restored) {
   }
   setTime(time_);
   // Confinement and force-dependent rates follow from the positions: nothing is stored.
-  updateFeedback();
+  // The state here is the config's (or the checkpoint's), so what cannot be fed back is
+  // the input's fault (e.g. a potential whose energies overflow).
+  try {
+    updateFeedback();
+  } catch (const RunError& e) {
+    throw InputError(fmt::format("{}: {}", config.source, e.what()));
+  }
 }
 
 System::~System() = default;

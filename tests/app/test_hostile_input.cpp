@@ -177,6 +177,19 @@ TEST(HostileInput, UnboundedChemistryIsRefusedNamingTheChannel) {
 }
 
 // A run that fails before its first checkpoint does not claim to keep one.
+// A filament type without a monomer species reacts with nothing; beside [[species]] its
+// empty reaction range sat where the config's empty one did, and the engine took one
+// for the other ("internal error: rate factors ... claimed already").
+TEST(HostileInput, AMechanicsOnlyFilamentTypeBesideSpeciesRuns) {
+  TempDir dir;
+  const fs::path config =
+      writeConfig(dir.path(), std::string(kSpecies) + "[[filament_type]]\nname = \"actin\"\n", "mechanics_only.toml");
+  const RunResult check = runCortex({"check", config.string()}, dir.path());
+  EXPECT_EQ(check.exit_code, 0) << describe(check);
+  const RunResult run = runConfig(config, dir / "out", {}, dir.path());
+  EXPECT_EQ(run.exit_code, 0) << describe(run);
+}
+
 TEST(HostileInput, FailureBeforeTheFirstCheckpointSaysNoneWasWritten) {
   TempDir dir;
   const fs::path config = writeConfig(dir.path(), replaced(kVesicle, "[[membrane]]",

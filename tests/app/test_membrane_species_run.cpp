@@ -158,6 +158,71 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
   }
 }
 
+// A 400 nm patch with one membrane species P (and a 3D species C): what a bad-input sweep
+// found slipping through as "internal error" (exit 1), a run that check had passed, or a
+// garbled message. `species` and `reactions` are appended to P's table and to the file.
+std::string patchWith(const std::string& species, const std::string& reactions = "") {
+  return R"([simulation]
+end_time = 0.02
+chemistry_window = 0.01
+[[membrane]]
+name = "patch"
+shape = "plane"
+center = [200.0, 200.0, 0.0]
+size = [400.0, 400.0]
+mesh_size = 25.0
+boundary = "fixed"
+bending_modulus = 100.0
+area_model = "none"
+[[membrane.species]]
+name = "P"
+diffusion = 1.0e6
+copies = 300
+)" + species + R"(
+[compartments]
+size = 200.0
+shape = [2, 2, 1]
+[[species]]
+name = "C"
+diffusion = 1.0e7
+copies = 1000
+)" + reactions;
+}
+
+TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
+  // Energies that overflow the rates, found when the species are set up: exit 2 naming
+  // the species and the block (they were exit 1, "internal error").
+  expectCheckFails(patchWith("[membrane.species.potential]\nwidth = 1e-200\nheight = 2.0\ncenter = 200.0\n"),
+                   "species \"P\": its potential", "not finite");
+  expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.1\nrange = 1e300\n"),
+                   "species \"P\": its interaction", "not finite");
+  expectCheckFails(patchWith("[membrane.species.potential]\ntype = \"ramp\"\nslope = 10.0\ncenter = 200.0\n",
+                             "[[reaction]]\nequation = \"P -> C\"\nrate = 1.0\n"),
+                   "unbinding at r e^(beta V) overflows", "potential");
+  // A strong attraction multiplies hops and unbinding past the events limit: check says
+  // so as the run would at its first window (check passed it before).
+  expectCheckFails(patchWith("footprint = 20.0\n[membrane.species.interaction]\nheight = 5.0\nrange = 30.0\n",
+                             "[[reaction]]\nequation = \"P -> C\"\nrate = 1.0\n"),
+                   "max_events_per_window", "a membrane species' energies multiply");
+  // Every point of a bending-modulus schedule must be > 0 for curvature sensing.
+  std::string schedule = patchWith("[membrane.species.curvature]\narea = 20.0\nbending_modulus = 100.0\n");
+  replaceOnce(schedule, "bending_modulus = 100.0\narea_model", "bending_modulus = [[0.0, 100.0], [0.01, 0.0]]\narea_model");
+  expectCheckFails(schedule, "membrane.0.bending_modulus", "(at t = 0.01 s)");
+  // Two interacting copies leaving together, as "2 P -> C" (refused before) does.
+  expectCheckFails(patchWith("[membrane.species.curvature]\narea = 20.0\nbending_modulus = 100.0\n"
+                             "[[membrane.species]]\nname = \"Q\"\ndiffusion = 1.0e6\ncopies = 100\n",
+                             "[[reaction]]\nequation = \"P + Q -> C\"\nrate = 1.0\n"),
+                   "reaction.0.equation", "one copy at a time");
+  expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 10.01\nrange = 30.0\n"),
+                   "membrane.0.species.0.interaction.height", "[0, 10]");
+  // A footprint so small that a vertex's room overflowed 64-bit integers into a negative
+  // count of places: accepted, as any positive footprint that fits.
+  TempDir dir;
+  const RunResult tiny =
+      runCortex({"check", writeConfig(dir.path(), patchWith("footprint = 5e-17\n")).string()}, dir.path());
+  EXPECT_EQ(tiny.exit_code, 0) << describe(tiny);
+}
+
 // The pair attraction's rates live in the engine and follow every hop; a resumed run
 // must rebuild them to the last bit from the copies alone.
 // An example shortened to end_time.
