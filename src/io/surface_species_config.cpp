@@ -14,7 +14,9 @@ SurfacePotentialConfig readPotential(const ConfigReader& r) {
   const std::string type = r.choice("type", "gaussian_stripe", {"gaussian_stripe", "ramp"});
   const std::string axis = r.choice("axis", "x", {"x", "y", "z"});
   p.axis = axis[0] - 'x';
-  p.center = r.number("center", 0.0, Range{}, "nm");
+  // Farther out, V = slope (x - center) at the vertices would be so large that its
+  // differences from vertex to vertex, all the drift is, drown in rounding.
+  p.center = r.number("center", 0.0, Range{-1e7, 1e7}, "nm");
   if (type == "gaussian_stripe") {
     p.kind = SurfacePotentialConfig::Kind::kGaussianStripe;
     p.height = r.requiredNumber("height", Range{-100.0, 100.0}, "k_BT");

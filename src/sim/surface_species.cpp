@@ -76,6 +76,17 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
         count = std::llround(expected);
       }
+      // Proteins that sense or make curvature cover A_p each; more of them than the whole
+      // membrane holds is no state at all (φ is capped at 1 per cell, docs/proteins.md).
+      if (s.curvature) {
+        double membrane_area = 0.0;
+        for (Index v = 0; v < n; ++v) membrane_area += area[v];
+        if (static_cast<double>(count) * s.curvature->area > membrane_area)
+          throw InputError(fmt::format("{}: {} copies of area {:g} nm^2 (curvature.area) would cover {:.3g} times "
+                                       "the membrane's {:.6g} nm^2; give fewer copies or a lower density",
+                                       where, count, s.curvature->area,
+                                       static_cast<double>(count) * s.curvature->area / membrane_area, membrane_area));
+      }
       // With a footprint, the copies of all such species share a vertex's area as the
       // engine counts them (SpeciesDef::footprint): a vertex holds at most `room` more.
       std::vector<std::int64_t> room(static_cast<std::size_t>(n), 0);

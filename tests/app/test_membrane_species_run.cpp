@@ -215,6 +215,13 @@ TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
                    "reaction.0.equation", "one copy at a time");
   expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 10.01\nrange = 30.0\n"),
                    "membrane.0.species.0.interaction.height", "[0, 10]");
+  // More curvature proteins than the membrane can hold (the 400 nm patch is 1.6e5 nm^2),
+  // and a ramp centred so far out that its differences drown in rounding.
+  std::string covering = patchWith("[membrane.species.curvature]\narea = 20.0\nbending_modulus = 100.0\n");
+  replaceOnce(covering, "copies = 300", "copies = 20000");
+  expectCheckFails(covering, "species \"P\"", "would cover 2.5 times");
+  expectCheckFails(patchWith("[membrane.species.potential]\ntype = \"ramp\"\nslope = 0.01\ncenter = -1e300\n"),
+                   "membrane.0.species.0.potential.center", "");
   // A footprint so small that a vertex's room overflowed 64-bit integers into a negative
   // count of places: accepted, as any positive footprint that fits.
   TempDir dir;
