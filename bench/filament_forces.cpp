@@ -9,7 +9,9 @@
 //     200 motors and 100 branches.
 // Positions are fixed between calls, as between minimizer steps shorter than skin/2, so
 // the exclusion list is built once; `exclusion_rebuild` measures a forced rebuild.
-// Throughput: bead_evals_per_s = beads x calls / wall second.
+// Throughput: bead_evals_per_s = beads x calls / wall second. The relaxation's Hessian
+// model (filament_preconditioner.hpp): its build and factorization, once per relaxation,
+// and one solve, once per L-BFGS iteration, beside a force evaluation of the same network.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -21,6 +23,7 @@
 #include "filament/branch_energy.hpp"
 #include "filament/excluded_volume_energy.hpp"
 #include "filament/filament_bending_energy.hpp"
+#include "filament/filament_preconditioner.hpp"
 #include "filament/spring_energy.hpp"
 #include "filament/stretching_energy.hpp"
 
@@ -157,6 +160,36 @@ void BM_ExclusionRebuild(benchmark::State& state, Scenario (*make)()) {
   setThroughput(state, s);
 }
 
+// The model built and factorized at the network's positions (no frozen beads).
+void BM_PreconditionerBuild(benchmark::State& state, Scenario (*make)()) {
+  const Scenario s = make();
+  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.x.data(), static_cast<Eigen::Index>(s.x.size()));
+  const std::vector<char> frozen(static_cast<std::size_t>(s.layout.num_beads), 0);
+  for (auto _ : state) {
+    FilamentPreconditioner model;
+    benchmark::DoNotOptimize(model.build(s.layout, s.types, x, frozen));
+  }
+  setThroughput(state, s);
+}
+
+// One solve P z = r with the factor built once.
+void BM_PreconditionerApply(benchmark::State& state, Scenario (*make)()) {
+  const Scenario s = make();
+  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.x.data(), static_cast<Eigen::Index>(s.x.size()));
+  FilamentPreconditioner model;
+  if (!model.build(s.layout, s.types, x, std::vector<char>(static_cast<std::size_t>(s.layout.num_beads), 0))) {
+    state.SkipWithError("the model did not factorize");
+    return;
+  }
+  const Eigen::VectorXd r = Eigen::VectorXd::Ones(x.size());
+  Eigen::VectorXd z;
+  for (auto _ : state) {
+    model.apply(r, z);
+    benchmark::DoNotOptimize(z.data());
+  }
+  setThroughput(state, s);
+}
+
 BENCHMARK_CAPTURE(BM_FilamentField, actomyosin, actomyosin)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_FilamentField, large, large)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_FilamentTerm, large_stretching, 0)->UseRealTime()->Unit(benchmark::kMicrosecond);
@@ -165,6 +198,10 @@ BENCHMARK_CAPTURE(BM_FilamentTerm, large_excluded_volume, 2)->UseRealTime()->Uni
 BENCHMARK_CAPTURE(BM_FilamentTerm, large_boundary, 3)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ExclusionRebuild, actomyosin, actomyosin)->UseRealTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ExclusionRebuild, large, large)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PreconditionerBuild, actomyosin, actomyosin)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PreconditionerBuild, large, large)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PreconditionerApply, actomyosin, actomyosin)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_PreconditionerApply, large, large)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace cortex

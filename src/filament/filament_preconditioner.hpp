@@ -13,7 +13,7 @@
 //     unstressed filament);
 //   - linkers, motors and a branch's position spring: their stiffness on each end's own
 //     beads, as if the other end were held, so that filaments stay uncoupled and every
-//     solve is a set of short banded chains;
+//     solve is a set of short banded chains (and the matrix a band, built in place);
 //   - eps I on every bead, eps = kShiftFraction * the stiffest k_s (10 pN/nm for actin):
 //     the contacts (excluded volume, walls, membranes) change between evaluations and
 //     are not in the model; eps stands for their scale and gives free filaments' rigid
@@ -48,7 +48,7 @@ class FilamentPreconditioner {
   // z = P^-1 r on the network's coordinates; z is r elsewhere (there r is zero: the
   // other bodies are held).
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
-  // The model itself (for tests).
+  // The model's lower triangle (for tests).
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
  private:

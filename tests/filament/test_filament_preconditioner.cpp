@@ -66,8 +66,8 @@ TEST(FilamentPreconditioner, IsTheExactHessianOfAStraightFilamentAtRest) {
     ASSERT_TRUE(model.build(layout, types, x, std::vector<char>(layout.num_beads, 0)));
     const Index n = 3 * layout.num_beads;
     const double shift = FilamentPreconditioner::kShiftFraction * types[type].stretching_stiffness;
-    const Eigen::MatrixXd modelled =
-        Eigen::MatrixXd(model.matrix()) - shift * Eigen::MatrixXd::Identity(n, n);
+    const Eigen::SparseMatrix<double> full = model.matrix().selfadjointView<Eigen::Lower>();
+    const Eigen::MatrixXd modelled = Eigen::MatrixXd(full) - shift * Eigen::MatrixXd::Identity(n, n);
     const double h = 1e-4;
     Eigen::MatrixXd exact(n, n);
     Eigen::VectorXd gp(x.size()), gm(x.size());
