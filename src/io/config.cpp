@@ -39,6 +39,10 @@ MinimizerSettings readMechanics(const ConfigReader& r) {
   m.force_tolerance = r.number("force_tolerance", m.force_tolerance, Range::positive(), "pN");
   m.max_iterations = r.integer("max_iterations", m.max_iterations, 1, 1'000'000'000);
   m.max_step = r.number("max_step", m.max_step, Range::positive(), "nm");
+  const std::string filaments = r.choice("filament_minimizer", "cg", {"cg", "preconditioned_lbfgs"});
+  if (filaments != "cg" && m.kind != MinimizerKind::kAuto)
+    r.fail("filament_minimizer", "applies under minimizer = \"auto\" only (the others relax everything at once)");
+  m.precondition_filaments = filaments == "preconditioned_lbfgs";
   r.finish();
   return m;
 }

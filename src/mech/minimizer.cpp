@@ -11,7 +11,7 @@
 namespace cortex {
 
 MinimizationResult minimize(Objective& f, Eigen::VectorXd& x, const MinimizerSettings& settings) {
-  // kAuto here is a body relaxed without a preconditioner of its own: conjugate gradients.
+  // kAuto here is a body without a shape relaxation of its own: conjugate gradients.
   return settings.kind == MinimizerKind::kLbfgs ? detail::lbfgs(f, x, settings)
                                                 : detail::conjugateGradient(f, x, settings);
 }

@@ -10,8 +10,8 @@
 namespace cortex {
 
 // kAuto: each membrane by its shape relaxation (membrane/shape_relaxation.hpp), then the
-// filaments by L-BFGS on their Hessian model (filament/filament_preconditioner.hpp);
-// kConjugateGradient, kLbfgs: everything at once over all coordinates, unpreconditioned
+// filaments by conjugate gradients (or, with precondition_filaments, by L-BFGS on their
+// Hessian model); kConjugateGradient, kLbfgs: everything at once over all coordinates
 // (membranes need penalty area and volume terms then).
 enum class MinimizerKind { kAuto, kConjugateGradient, kLbfgs };
 
@@ -33,6 +33,9 @@ struct MinimizerSettings {
   long max_iterations = 100000;
   double max_step = 20.0;        // nm: largest move of any coordinate in one line search
   int lbfgs_memory = 10;
+  // kAuto only: the filaments by L-BFGS on their Hessian model
+  // (filament/filament_preconditioner.hpp) instead of conjugate gradients.
+  bool precondition_filaments = false;
   // L-BFGS only, optional: z = H0 r, its initial inverse Hessian (a preconditioner). Without
   // it, the identity scaled by the latest curvature pair.
   std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z)> inverse_hessian;

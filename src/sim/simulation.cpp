@@ -208,24 +208,30 @@ MinimizationResult Simulation::relaxFilaments() {
                                3 * net->numPoints());
     Eigen::VectorXd x = system_.coordinates();
     MinimizerSettings filament_settings = mech_;
-    // L-BFGS on the network's own Hessian model (filament_preconditioner.hpp): 2.5-9x fewer
-    // force evaluations than conjugate gradients where membranes push (docs/filaments.md).
-    filament_settings.kind = MinimizerKind::kLbfgs;
+    // Conjugate gradients, or on request L-BFGS on the network's own Hessian model
+    // (filament_preconditioner.hpp): 2.5-9x fewer force evaluations where membranes push,
+    // but a bundle pulling a tube then failed to come to rest with its membrane in some
+    // windows (docs/filaments.md, Relaxation).
+    const bool preconditioned = mech_.precondition_filaments;
     FilamentPreconditioner model;
-    std::vector<char> frozen(static_cast<std::size_t>(net->numPoints()));
-    net->frozen(frozen.data());
-    if (model.build(net->layout(), net->config().types, x, frozen))
-      filament_settings.inverse_hessian = [&model](const Eigen::VectorXd& r, Eigen::VectorXd& z) { model.apply(r, z); };
-    else
-      spdlog::debug("t = {:.6g} s: the filaments' Hessian model did not factorize; relaxing them unpreconditioned",
-                    system_.time());
+    filament_settings.kind = preconditioned ? MinimizerKind::kLbfgs : MinimizerKind::kConjugateGradient;
+    if (preconditioned) {
+      std::vector<char> frozen(static_cast<std::size_t>(net->numPoints()));
+      net->frozen(frozen.data());
+      if (model.build(net->layout(), net->config().types, x, frozen))
+        filament_settings.inverse_hessian = [&model](const Eigen::VectorXd& r, Eigen::VectorXd& z) { model.apply(r, z); };
+      else
+        spdlog::debug("t = {:.6g} s: the filaments' Hessian model did not factorize; relaxing them unpreconditioned",
+                      system_.time());
+    }
     filament_settings.progress = progressOf("filaments");
     const long evaluations_before = system_.forceField().forceEvaluations();
     const MinimizationResult f = minimize(filaments, x, filament_settings);
     system_.setCoordinates(x);
-    spdlog::debug("t = {:.6g} s: filaments relaxed{} in {} iterations, {} force evaluations; max force {:.3g} pN "
+    spdlog::debug("t = {:.6g} s: filaments relaxed{} by {} in {} iterations, {} force evaluations; max force {:.3g} pN "
                   "(tolerance {:.3g} pN)",
-                  system_.time(), f.converged ? "" : " (NOT converged: " + f.stop_reason + ")", f.iterations,
+                  system_.time(), f.converged ? "" : " (NOT converged: " + f.stop_reason + ")",
+                  preconditioned ? "preconditioned L-BFGS" : "CG", f.iterations,
                   system_.forceField().forceEvaluations() - evaluations_before, f.max_force, mech_.force_tolerance);
     r.iterations += f.iterations;
     r.energy += f.energy;

@@ -51,43 +51,47 @@ Config pushConfig(double gap) {
   return c;
 }
 
+// The tip starts 2 nm under the membrane, where the repulsion is ~2πk/h³ = 80 pN: the
+// membrane gives way and the filament shortens until the push on the tip equals the
+// filament's compression k (l0 − l). Both are relaxed to force_tolerance (0.1 pN), so
+// they agree within twice that. The same with either filament minimizer.
 TEST(MembraneFilamentSystem, APushedPatchAndTheFilamentComeToRestTogether) {
-  // The tip starts 2 nm under the membrane, where the repulsion is ~2πk/h³ = 80 pN: the
-  // membrane gives way and the filament shortens until the push on the tip equals the
-  // filament's compression k (l0 − l). Both are relaxed to force_tolerance (0.1 pN), so
-  // they agree within twice that.
-  const Config config = pushConfig(2.0);
-  System system(config);
-  ResultRecorder recorder;
-  Simulation sim(system, config.simulation, config.mechanics, recorder);
-  ASSERT_EQ(sim.run(true), RunOutcome::kFinished);
-  EXPECT_TRUE(recorder.last.converged) << recorder.last.stop_reason;
-  const FilamentNetwork& net = *system.filaments();
-  const Filament& f = net.filaments()[0];
-  ASSERT_EQ(f.beads.size(), 2u);
-  const Eigen::VectorXd contact = system.forceField().contactForces(system.coordinates());
-  const Vec3 push = contact.segment<3>(3 * (net.offset() + 1));
-  const double length = (f.beads[1] - f.beads[0]).norm();
-  const double compression = net.type(0).stretching_stiffness * (f.monomers() * net.type(0).monomer_size - length);
-  EXPECT_LT(push.z(), -0.5);  // pushed back (0.76 pN here: the soft filament yields)
-  EXPECT_NEAR(-push.z(), compression, 0.2);
-  // The membrane moved up over the tip, which stays below it.
-  double top = -1e9;
-  for (const Vec3& v : system.membranes()[0]->mesh().positions()) top = std::max(top, v.z());
-  EXPECT_GT(top, 251.0);
-  EXPECT_LT(f.beads[1].z(), top);
-  EXPECT_FALSE(findMembraneCrossing(*system.membranes()[0], net));
-  // And the membrane is at rest under the filament as it ended: relaxing it again
-  // finds nothing to do (relaxing each body only once would leave it pushed).
-  const ShapeRelaxationReport again =
-      relaxMembraneShape(*system.membranes()[0], system.forceField(), system.time(), ShapeRelaxationSettings{});
-  EXPECT_EQ(again.iterations, 0);
-  EXPECT_TRUE(again.converged);
-  // The membrane's energy breakdown names the interaction.
-  bool listed = false;
-  for (const TermEnergy& e : system.forceField().breakdown(system.coordinates()))
-    listed = listed || (e.owner == "patch" && e.name == "filament_exclusion" && e.energy > 0);
-  EXPECT_TRUE(listed);
+  for (const bool preconditioned : {false, true}) {
+    SCOPED_TRACE(preconditioned ? "preconditioned L-BFGS" : "conjugate gradients");
+    Config config = pushConfig(2.0);
+    config.mechanics.precondition_filaments = preconditioned;
+    System system(config);
+    ResultRecorder recorder;
+    Simulation sim(system, config.simulation, config.mechanics, recorder);
+    ASSERT_EQ(sim.run(true), RunOutcome::kFinished);
+    EXPECT_TRUE(recorder.last.converged) << recorder.last.stop_reason;
+    const FilamentNetwork& net = *system.filaments();
+    const Filament& f = net.filaments()[0];
+    ASSERT_EQ(f.beads.size(), 2u);
+    const Eigen::VectorXd contact = system.forceField().contactForces(system.coordinates());
+    const Vec3 push = contact.segment<3>(3 * (net.offset() + 1));
+    const double length = (f.beads[1] - f.beads[0]).norm();
+    const double compression = net.type(0).stretching_stiffness * (f.monomers() * net.type(0).monomer_size - length);
+    EXPECT_LT(push.z(), -0.5);  // pushed back (0.76 pN here: the soft filament yields)
+    EXPECT_NEAR(-push.z(), compression, 0.2);
+    // The membrane moved up over the tip, which stays below it.
+    double top = -1e9;
+    for (const Vec3& v : system.membranes()[0]->mesh().positions()) top = std::max(top, v.z());
+    EXPECT_GT(top, 251.0);
+    EXPECT_LT(f.beads[1].z(), top);
+    EXPECT_FALSE(findMembraneCrossing(*system.membranes()[0], net));
+    // And the membrane is at rest under the filament as it ended: relaxing it again
+    // finds nothing to do (relaxing each body only once would leave it pushed).
+    const ShapeRelaxationReport again =
+        relaxMembraneShape(*system.membranes()[0], system.forceField(), system.time(), ShapeRelaxationSettings{});
+    EXPECT_EQ(again.iterations, 0);
+    EXPECT_TRUE(again.converged);
+    // The membrane's energy breakdown names the interaction.
+    bool listed = false;
+    for (const TermEnergy& e : system.forceField().breakdown(system.coordinates()))
+      listed = listed || (e.owner == "patch" && e.name == "filament_exclusion" && e.energy > 0);
+    EXPECT_TRUE(listed);
+  }
 }
 
 TEST(MembraneFilamentSystem, AClampedAnchorHoldsTheDirectionAPinnedOneLetsItTurn) {

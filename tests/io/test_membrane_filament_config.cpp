@@ -79,5 +79,18 @@ TEST(MembraneFilamentConfig, BadValuesAreNamed) {
   EXPECT_NE(alone.find("needs at least one [[membrane]] and a [[filament_type]]"), std::string::npos) << alone;
 }
 
+// [mechanics] filament_minimizer: conjugate gradients unless asked, and only under "auto".
+TEST(MembraneFilamentConfig, FilamentMinimizerIsCgUnlessAskedAndOnlyUnderAuto) {
+  EXPECT_FALSE(parse(kMembrane + kFilaments).mechanics.precondition_filaments);
+  EXPECT_TRUE(parse(kMembrane + kFilaments + "[mechanics]\nfilament_minimizer = \"preconditioned_lbfgs\"\n")
+                  .mechanics.precondition_filaments);
+  const std::string wrong = errorOf(kMembrane + kFilaments +
+                                    "[mechanics]\nminimizer = \"cg\"\nfilament_minimizer = \"preconditioned_lbfgs\"\n");
+  EXPECT_NE(wrong.find("mechanics.filament_minimizer"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("\"auto\" only"), std::string::npos) << wrong;
+  const std::string unknown = errorOf(kMembrane + kFilaments + "[mechanics]\nfilament_minimizer = \"newton\"\n");
+  EXPECT_NE(unknown.find("mechanics.filament_minimizer"), std::string::npos) << unknown;
+}
+
 }  // namespace
 }  // namespace cortex
