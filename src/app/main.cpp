@@ -2,6 +2,8 @@
 // (0 success, 1 failure during the run, 2 bad input, 3 stopped by a signal after a
 // checkpoint).
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -79,6 +81,8 @@ int main(int argc, char** argv) {
                                      medyan_chemistry.empty() ? std::nullopt : std::optional(std::filesystem::path(medyan_chemistry)),
                                      medyan_output, medyan_overwrite, false);
     if (*check_cmd) {
+      // Warnings to stderr: stdout carries the verdict alone, for scripts.
+      spdlog::set_default_logger(spdlog::stderr_color_st("check"));
       if (cortex::isSweepFile(config)) {
         if (!check_overrides.empty()) {
           std::cerr << "cortex check: --set applies to a run config, not to a sweep file (" << config << ")\n";

@@ -221,6 +221,11 @@ void FilamentNetwork::setOffset(Index offset) {
   ++l.version;
 }
 
+void FilamentNetwork::moveOffset(Index offset) {
+  Body::setOffset(offset);
+  layout_.bead_offset = offset;
+}
+
 void FilamentNetwork::gather(double* out) const {
   for (const Filament& f : filaments_)
     for (const Vec3& p : f.beads) {

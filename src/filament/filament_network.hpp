@@ -70,6 +70,8 @@ class FilamentNetwork final : public Body {
   void frozen(char* mask) const override;  // anchored minus ends
   // Rebuilds the layout with the beads starting at `offset`.
   void setOffset(Index offset) override;
+  // The layout's lists do not depend on where the beads start: only the offset changes.
+  void moveOffset(Index offset) override;
 
   const FilamentConfig& config() const { return config_; }
   const FilamentType& type(Index t) const { return config_.types[t]; }

@@ -82,16 +82,24 @@ std::optional<BoxRegion> readRegion(const ConfigReader& reaction, const Compartm
 // The species of every [[membrane.species]], after the 3D ones: surface k is the k-th
 // membrane that has species.
 void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::vector<MembraneConfig>& membranes) {
-  for (const MembraneConfig& m : membranes) {
+  const std::vector<ConfigReader> membrane_tables = root.tableArray("membrane");
+  for (std::size_t i = 0; i < membranes.size(); ++i) {
+    const MembraneConfig& m = membranes[i];
     if (m.species.empty()) continue;
     const auto surface = static_cast<Index>(c.surfaces.size());
     c.surfaces.push_back(m.name);
-    for (const SurfaceSpeciesConfig& s : m.species) {
+    // The clash is told at the species' own name key, not at the membrane.
+    const std::vector<ConfigReader> species_tables =
+        i < membrane_tables.size() ? membrane_tables[i].tableArray("species") : std::vector<ConfigReader>{};
+    for (std::size_t k = 0; k < m.species.size(); ++k) {
+      const SurfaceSpeciesConfig& s = m.species[k];
+      const ConfigReader& at = k < species_tables.size() ? species_tables[k] : root;
       for (const SpeciesDef& other : c.species)
         if (other.name == s.name)
-          root.fail("membrane", fmt::format("species \"{}\" of membrane \"{}\" has the name of another species; "
-                                            "species names must be unique across [[species]] and every membrane",
-                                            s.name, m.name));
+          at.fail(k < species_tables.size() ? "name" : "membrane",
+                  fmt::format("species \"{}\" of membrane \"{}\" has the name of another species; species names "
+                              "must be unique across [[species]] and every membrane",
+                              s.name, m.name));
       c.species.push_back(SpeciesDef{s.name, s.diffusion, surface, s.footprint});
       c.initial_copies.push_back(0);
       c.sides.emplace_back();

@@ -25,9 +25,26 @@ class Body {
   // Where its points start; a body whose terms keep indices into the coordinate vector
   // rebuilds them here.
   virtual void setOffset(Index offset) { offset_ = offset; }
+  // The same with nothing else rebuilt: for evaluating the body on its own coordinates
+  // and putting it back (BodyAtOffsetZero).
+  virtual void moveOffset(Index offset) { offset_ = offset; }
 
  private:
   Index offset_ = 0;
+};
+
+// The body's terms read its coordinates at its offset in the System's vector; a relaxation
+// of the body alone (Evaluation::alone) evaluates them on its own coordinates, at offset 0.
+class BodyAtOffsetZero {
+ public:
+  explicit BodyAtOffsetZero(Body& b) : b_(b), offset_(b.offset()) { b_.moveOffset(0); }
+  ~BodyAtOffsetZero() { b_.moveOffset(offset_); }
+  BodyAtOffsetZero(const BodyAtOffsetZero&) = delete;
+  BodyAtOffsetZero& operator=(const BodyAtOffsetZero&) = delete;
+
+ private:
+  Body& b_;
+  Index offset_;
 };
 
 }  // namespace cortex

@@ -1,26 +1,33 @@
 #include "mech/force_field.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace cortex {
 
-double ForceField::value(const Eigen::VectorXd& x) { return evaluateTerms(all_, x, nullptr); }
+double ForceField::value(const Eigen::VectorXd& x) { return evaluate(all_, x, nullptr, nullptr, 0); }
 
 double ForceField::valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) {
-  return evaluateTerms(all_, x, &gradient);
+  return evaluate(all_, x, &gradient, nullptr, 0);
 }
 
 double ForceField::evaluateTerms(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x,
                                  Eigen::VectorXd* gradient) {
+  return evaluate(terms, x, gradient, nullptr, 0);
+}
+
+double ForceField::evaluate(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
+                            const Body* alone, Eigen::Index first) {
   const auto start = std::chrono::steady_clock::now();
   ++(gradient ? force_evaluations_ : energy_evaluations_);
   if (gradient) gradient->setZero(x.size());
-  const Evaluation e{x.data(), gradient ? gradient->data() : nullptr, ++version_};
+  const Evaluation e{x.data(), gradient ? gradient->data() : nullptr, ++version_, alone};
   double total = 0.0;
   for (EnergyTerm* term : terms) total += term->evaluate(e);
   if (gradient) {
-    for (std::size_t i = 0; i < frozen_.size(); ++i)
-      if (frozen_[i]) (*gradient)[static_cast<Eigen::Index>(i)] = 0.0;
+    const Eigen::Index end = std::min<Eigen::Index>(x.size(), static_cast<Eigen::Index>(frozen_.size()) - first);
+    for (Eigen::Index i = 0; i < end; ++i)
+      if (frozen_[static_cast<std::size_t>(first + i)]) (*gradient)[i] = 0.0;
     force_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return total;

@@ -44,20 +44,6 @@ constexpr double kLargestNaturalTolerance = 0.1;  // pN
 constexpr double kStepTolerance = 2e-4;
 
 
-// The membrane's terms read its coordinates at its offset in the System's vector; the
-// relaxation evaluates them on the membrane's own coordinates, at offset 0.
-class AtOffsetZero {
- public:
-  explicit AtOffsetZero(Membrane& m) : m_(m), offset_(m.offset()) { m_.setOffset(0); }
-  ~AtOffsetZero() { m_.setOffset(offset_); }
-  AtOffsetZero(const AtOffsetZero&) = delete;
-  AtOffsetZero& operator=(const AtOffsetZero&) = delete;
-
- private:
-  Membrane& m_;
-  Index offset_;
-};
-
 // What the relaxation needs to know of the membrane's terms: κ to scale the metric, and
 // the stiffness of global penalties (area, volume) to add them to it exactly.
 struct TermScales {
@@ -106,7 +92,7 @@ double naturalForceTolerance(const Membrane& m, double t) {
 
 ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double t, const ShapeRelaxationSettings& s) {
   const auto start = SteadyClock::now();
-  const AtOffsetZero at_zero(m);
+  const BodyAtOffsetZero at_zero(m);
   ShapeRelaxationReport rep;
   rep.force_tolerance = s.force_tolerance > 0 ? s.force_tolerance : naturalForceTolerance(m, t);
   const bool closed = m.isClosed();

@@ -203,10 +203,13 @@ MinimizationResult Simulation::relaxMembranes() {
 
 MinimizationResult Simulation::relaxFilaments() {
   MinimizationResult r{true, 0, 0.0, 0.0, ""};
-  if (const FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
-    ForceField::Part filaments(system_.forceField(), system_.forceField().termsOf(net->name()), 3 * net->offset(),
-                               3 * net->numPoints());
-    Eigen::VectorXd x = system_.coordinates();
+  if (FilamentNetwork* net = system_.filaments(); net && net->numPoints() > 0) {
+    // On the network's own coordinates: the membranes stay where they are held.
+    const Eigen::Index first = 3 * net->offset();
+    Eigen::VectorXd x(3 * net->numPoints());
+    net->gather(x.data());
+    const BodyAtOffsetZero at_zero(*net);
+    ForceField::Alone filaments(system_.forceField(), system_.forceField().termsOf(net->name()), *net, first);
     MinimizerSettings filament_settings = mech_;
     // Conjugate gradients, or on request L-BFGS on the network's own Hessian model
     // (filament_preconditioner.hpp): 2.5-9x fewer force evaluations where membranes push,
@@ -227,7 +230,7 @@ MinimizationResult Simulation::relaxFilaments() {
     filament_settings.progress = progressOf("filaments");
     const long evaluations_before = system_.forceField().forceEvaluations();
     const MinimizationResult f = minimize(filaments, x, filament_settings);
-    system_.setCoordinates(x);
+    net->scatter(x.data());
     spdlog::debug("t = {:.6g} s: filaments relaxed{} by {} in {} iterations, {} force evaluations; max force {:.3g} pN "
                   "(tolerance {:.3g} pN)",
                   system_.time(), f.converged ? "" : " (NOT converged: " + f.stop_reason + ")",

@@ -271,6 +271,15 @@ TEST_F(CliErrors, ChemistryKeysThatCannotWorkAreRejected) {
   EXPECT_EQ(check(configWith(kSphere + "\n[[membrane.species]]\nname = \"M\"\ncopies = 10\n")).exit_code, 0)
       << "membrane species are supported";
   expectInputError(check(configWith(kSphere + "\n[[membrane.species]]\ncopies = 10\n")), {"membrane.0.species.0.name"});
+  // A membrane species named like a 3D one, or like one of another membrane's, is told at
+  // its own name key, not at its membrane's table.
+  const std::string surface_m = "[[membrane.species]]\nname = \"M\"\ndiffusion = 1e5\n";
+  const RunResult clash3d = check(configWith(kSphere + surface_m, "[[species]]\nname = \"M\"\ndiffusion = 1.0\ncopies = 1\n"));
+  expectInputError(clash3d, {"membrane.0.species.0.name", "unique"});
+  const std::string second =
+      "[[membrane]]\nname = \"outer\"\nshape = \"sphere\"\nradius = 400.0\nmesh_size = 80.0\n" + surface_m;
+  const RunResult clash2d = check(configWith(kSphere + surface_m + second, species));
+  expectInputError(clash2d, {"membrane.1.species.0.name", "unique"});
 }
 
 // Filament tables through the CLI: a valid network passes `check` (placement included),

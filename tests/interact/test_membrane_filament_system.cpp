@@ -94,6 +94,38 @@ TEST(MembraneFilamentSystem, APushedPatchAndTheFilamentComeToRestTogether) {
   }
 }
 
+// The filaments relax on their own coordinates (ForceField::Alone, the network moved to
+// offset zero) beside a membrane that stays where it is held: the energy and forces must
+// be the network's part of those of the whole vector, frozen minus end included. Equal
+// to round-off (1e-12 relative): the same terms sum the same pairs.
+TEST(MembraneFilamentSystem, TheFilamentsAloneSeeTheirPartOfTheWholeForces) {
+  System system(pushConfig(2.0));
+  FilamentNetwork& net = *system.filaments();
+  ASSERT_GT(net.offset(), 0);  // after the membrane's vertices: the offset matters
+  ForceField& field = system.forceField();
+  const std::vector<EnergyTerm*> terms = field.termsOf(net.name());
+  Eigen::VectorXd whole = system.coordinates();
+  whole.segment<3>(3 * (net.offset() + 1)) += Vec3(0.3, -0.2, 0.5);  // off its rest
+  Eigen::VectorXd whole_gradient;
+  const double whole_energy = field.evaluateTerms(terms, whole, &whole_gradient);
+  const Eigen::Index first = 3 * net.offset(), count = 3 * net.numPoints();
+  Eigen::VectorXd x = whole.segment(first, count), gradient;
+  double energy = 0.0;
+  {
+    const BodyAtOffsetZero at_zero(net);
+    ForceField::Alone alone(field, terms, net, first);
+    energy = alone.valueAndGradient(x, gradient);
+  }
+  EXPECT_EQ(net.offset(), first / 3);  // put back
+  ASSERT_EQ(gradient.size(), count);
+  EXPECT_GT(whole_energy, 0.0);
+  EXPECT_NEAR(energy, whole_energy, 1e-12 * std::abs(whole_energy));
+  const Eigen::VectorXd expected = whole_gradient.segment(first, count);
+  EXPECT_GT(expected.norm(), 1.0);  // the push of the membrane and the stretch
+  EXPECT_LE((gradient - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_EQ(gradient.head<3>().norm(), 0.0);  // the anchored minus end
+}
+
 TEST(MembraneFilamentSystem, AClampedAnchorHoldsTheDirectionAPinnedOneLetsItTurn) {
   // A two-cylinder filament tilted 20° from the normal, its tip 2 nm under the patch: the
   // membrane's push has a sideways part. Pinned, the filament turns about its minus end;
