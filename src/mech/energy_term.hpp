@@ -11,9 +11,9 @@ class Body;
 // Coordinates of every degree of freedom, and where to add the gradient (may be null
 // when only the energy is wanted). `version` changes whenever x changes, so terms that
 // share derived geometry can cache it. When `alone` is set, x and the gradient hold that
-// body's points only, laid out from offset zero (a membrane's shape relaxation), and
-// every other body stays at its stored positions: terms between bodies read those from
-// the body and give them no gradient.
+// body's points only, laid out from offset zero (a membrane's shape relaxation, the
+// filaments' relaxation under "auto"), and every other body stays at its stored
+// positions: terms between bodies read those from the body and give them no gradient.
 struct Evaluation {
   const double* x = nullptr;
   double* gradient = nullptr;
