@@ -187,7 +187,9 @@ fixed_minus_end = true
 """
 
 # A mixed bundle of 6 filaments pushing both poles of a small tense vesicle
-# (examples/vesicle_tubes.toml, small and short): 5 snapshots of poles pushed out.
+# (examples/vesicle_tubes.toml, small and short): 5 snapshots of poles pushed out. The
+# compartments are small enough for the 240 nm vesicle to be sliced right (cortex refuses
+# a confining vesicle under one compartment across).
 TUBES = """
 [simulation]
 seed = 3
@@ -196,8 +198,8 @@ chemistry_window = 0.01
 snapshot_interval = 0.05
 
 [compartments]
-size = 250.0
-shape = [4, 2, 2]
+size = 100.0
+shape = [10, 5, 5]
 
 [[species]]
 name = "G"

@@ -40,10 +40,11 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
   return out;
 }
 
-std::vector<std::string> warnOfCoarseSlicing(const std::vector<std::unique_ptr<Membrane>>& membranes,
+std::vector<std::string> checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes,
                                              const ChemistryConfig& config) {
-  // Below this many compartments across, the planar cut misses more than ~1% of the volume.
-  constexpr double kFewestCompartmentsAcross = 2.0;
+  // Below this many compartments across, the planar cut misses more than ~1% of the
+  // volume (a warning); below the second, 10-50% (an input error: not a result).
+  constexpr double kFewestCompartmentsAcross = 2.0, kTooFewCompartmentsAcross = 1.0;
   std::set<std::string> confining;
   for (const SpeciesSide& s : config.sides)
     if (!s.membrane.empty()) confining.insert(s.membrane);
@@ -56,6 +57,12 @@ std::vector<std::string> warnOfCoarseSlicing(const std::vector<std::unique_ptr<M
     for (const Vec3& p : m->mesh().positions()) box.extend(p);
     const double smallest = box.sizes().minCoeff(), across = smallest / config.grid.size;
     if (!(across < kFewestCompartmentsAcross)) continue;
+    if (across < kTooFewCompartmentsAcross)
+      throw InputError(fmt::format(
+          "membrane \"{}\" confines species but is only {:.2g} compartments across ({:.0f} nm against [compartments] "
+          "size = {:g} nm): slicing would miss 10-50% of the volume inside; make [compartments] size at most half "
+          "the membrane's smallest extent (docs/chemistry.md)",
+          m->name(), across, smallest, config.grid.size));
     coarse.push_back(m->name());
     spdlog::warn("membrane \"{}\" confines species but is only {:.2g} compartments across ({:.0f} nm against "
                  "[compartments] size = {:g} nm): slicing treats the membrane in a compartment as a plane and "

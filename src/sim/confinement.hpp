@@ -27,11 +27,12 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
                                                         const std::vector<SpeciesSide>& sides,
                                                         const CompartmentGrid& grid);
 
-// Warns (once, when the System is built) for every membrane that confines a species or
+// Warns (once, when the System is built) of every membrane that confines a species or
 // a reaction and is less than two compartments across its smallest extent: the planar
 // cut then misses the volume inside by over 1%, 6% at 1.5 compartments and 10-20% at
 // one (CompartmentSlicing tests, docs/chemistry.md). Returns those membranes' names.
-std::vector<std::string> warnOfCoarseSlicing(const std::vector<std::unique_ptr<Membrane>>& membranes,
+// Under one compartment across (10-50%) it throws InputError instead.
+std::vector<std::string> checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes,
                                              const ChemistryConfig& config);
 
 class ConfinementFeedback final : public Feedback {

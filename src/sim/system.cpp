@@ -124,7 +124,7 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   // (confinement), unbinding reactions' on the vertices (surface species): disjoint.
   const RateFactors config_factors = chemistry_->claimRateFactors(config_reactions);
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_factors));
-  warnOfCoarseSlicing(membranes_, cc);
+  checkSlicingResolution(membranes_, cc);
   if (!cc.surfaces.empty()) {
     auto surfaces = std::make_unique<SurfaceSpeciesFeedback>(
         cc, config.membranes, *chemistry_, membranes_, config_factors,

@@ -173,7 +173,8 @@ outside = "sheet"
 // A vesicle under two compartments across is sliced with errors of several percent in
 // its volume (CompartmentSlicing.TheVolumeErrorGrowsAsTheVesicleShrinksToACompartment):
 // check accepts it but says so, naming the membrane and the key that fixes it. The
-// vesicle of the tests above, four compartments across, gets no warning.
+// vesicle of the tests above, four compartments across, gets no warning; under one
+// compartment across the config is refused.
 TEST(ConfinedChemistryRun, AVesicleFewCompartmentsAcrossIsWarnedOf) {
   TempDir dir;
   const auto check = [&](const std::string& text) {
@@ -192,6 +193,10 @@ TEST(ConfinedChemistryRun, AVesicleFewCompartmentsAcrossIsWarnedOf) {
             std::string::npos)
       << describe(warned);
   EXPECT_NE(warned.err.find("[compartments] size"), std::string::npos) << describe(warned);
+  // Under one compartment across (10-50% of the volume missed) it is an input error.
+  std::string too_coarse = confinedConfig(0.1);
+  too_coarse.replace(too_coarse.find("size = 250"), 10, "size = 1100");
+  expectCheckFails(too_coarse, "vesicle", "0.91 compartments across");
 }
 
 TEST(ConfinedChemistryRun, ExampleIsAccepted) {
