@@ -88,15 +88,14 @@ void addSurfaceSpecies(ChemistryConfig& c, const ConfigReader& root, const std::
     if (m.species.empty()) continue;
     const auto surface = static_cast<Index>(c.surfaces.size());
     c.surfaces.push_back(m.name);
-    // The clash is told at the species' own name key, not at the membrane.
-    const std::vector<ConfigReader> species_tables =
-        i < membrane_tables.size() ? membrane_tables[i].tableArray("species") : std::vector<ConfigReader>{};
+    // membranes[i] and its species were read from these tables, in this order: a clash
+    // is told at the species' own name key.
+    const std::vector<ConfigReader> species_tables = membrane_tables[i].tableArray("species");
     for (std::size_t k = 0; k < m.species.size(); ++k) {
       const SurfaceSpeciesConfig& s = m.species[k];
-      const ConfigReader& at = k < species_tables.size() ? species_tables[k] : root;
       for (const SpeciesDef& other : c.species)
         if (other.name == s.name)
-          at.fail(k < species_tables.size() ? "name" : "membrane",
+          species_tables[k].fail("name",
                   fmt::format("species \"{}\" of membrane \"{}\" has the name of another species; species names "
                               "must be unique across [[species]] and every membrane",
                               s.name, m.name));

@@ -50,10 +50,10 @@ class ForceField final : public Objective {
     Alone(ForceField& field, std::vector<EnergyTerm*> terms, const Body& body, Eigen::Index first)
         : field_(field), terms_(std::move(terms)), body_(body), first_(first) {}
     double value(const Eigen::VectorXd& x) override {
-      return field_.evaluateAlone(terms_, body_, first_, x, nullptr);
+      return field_.evaluate(terms_, x, nullptr, &body_, first_);
     }
     double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
-      return field_.evaluateAlone(terms_, body_, first_, x, &g);
+      return field_.evaluate(terms_, x, &g, &body_, first_);
     }
 
    private:
@@ -90,10 +90,6 @@ class ForceField final : public Objective {
   // coordinate is `first` in the whole vector's frozen mask).
   double evaluate(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
                   const Body* alone, Eigen::Index first);
-  double evaluateAlone(const std::vector<EnergyTerm*>& terms, const Body& body, Eigen::Index first,
-                       const Eigen::VectorXd& x, Eigen::VectorXd* gradient) {
-    return evaluate(terms, x, gradient, &body, first);
-  }
 
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
   std::vector<EnergyTerm*> all_;  // the same, for evaluateTerms

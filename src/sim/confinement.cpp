@@ -40,8 +40,7 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
   return out;
 }
 
-std::vector<std::string> checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes,
-                                             const ChemistryConfig& config) {
+void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config) {
   // Below this many compartments across, the planar cut misses more than ~1% of the
   // volume (a warning); below the second, 10-50% (an input error: not a result).
   constexpr double kFewestCompartmentsAcross = 2.0, kTooFewCompartmentsAcross = 1.0;
@@ -50,27 +49,24 @@ std::vector<std::string> checkSlicingResolution(const std::vector<std::unique_pt
     if (!s.membrane.empty()) confining.insert(s.membrane);
   for (const ReactionRestriction& r : config.reaction_restrictions)
     if (!r.side.membrane.empty()) confining.insert(r.side.membrane);
-  std::vector<std::string> coarse;
   for (const auto& m : membranes) {
     if (!confining.count(m->name()) || m->mesh().numVertices() == 0) continue;
     Eigen::AlignedBox3d box;
     for (const Vec3& p : m->mesh().positions()) box.extend(p);
     const double smallest = box.sizes().minCoeff(), across = smallest / config.grid.size;
     if (!(across < kFewestCompartmentsAcross)) continue;
+    const std::string what = fmt::format(
+        "membrane \"{}\" confines species but is only {:.2g} compartments across ({:.0f} nm against [compartments] "
+        "size = {:g} nm)",
+        m->name(), across, smallest, config.grid.size);
     if (across < kTooFewCompartmentsAcross)
-      throw InputError(fmt::format(
-          "membrane \"{}\" confines species but is only {:.2g} compartments across ({:.0f} nm against [compartments] "
-          "size = {:g} nm): slicing would miss 10-50% of the volume inside; make [compartments] size at most half "
-          "the membrane's smallest extent (docs/chemistry.md)",
-          m->name(), across, smallest, config.grid.size));
-    coarse.push_back(m->name());
-    spdlog::warn("membrane \"{}\" confines species but is only {:.2g} compartments across ({:.0f} nm against "
-                 "[compartments] size = {:g} nm): slicing treats the membrane in a compartment as a plane and "
-                 "misses the volume inside by over 1% below 2 compartments across, 10-20% at one; a smaller "
-                 "[compartments] size fixes it (docs/chemistry.md)",
-                 m->name(), across, smallest, config.grid.size);
+      throw InputError(what + ": slicing would miss 10-50% of the volume inside; make [compartments] size at most "
+                              "half the membrane's smallest extent (docs/chemistry.md)");
+    spdlog::warn("{}: slicing treats the membrane in a compartment as a plane and misses the volume inside by over 1% "
+                 "below 2 compartments across, 10-20% at one; a smaller [compartments] size fixes it "
+                 "(docs/chemistry.md)",
+                 what);
   }
-  return coarse;
 }
 
 ConfinementFeedback::ConfinementFeedback(const ChemistryConfig& config, ChemistryEngine& engine,

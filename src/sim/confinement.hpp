@@ -7,7 +7,6 @@
 #include <array>
 #include <memory>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "sim/feedback.hpp"
@@ -30,10 +29,9 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
 // Warns (once, when the System is built) of every membrane that confines a species or
 // a reaction and is less than two compartments across its smallest extent: the planar
 // cut then misses the volume inside by over 1%, 6% at 1.5 compartments and 10-20% at
-// one (CompartmentSlicing tests, docs/chemistry.md). Returns those membranes' names.
-// Under one compartment across (10-50%) it throws InputError instead.
-std::vector<std::string> checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes,
-                                             const ChemistryConfig& config);
+// one (CompartmentSlicing tests, docs/chemistry.md). Under one compartment across
+// (10-50%) it throws InputError instead.
+void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config);
 
 class ConfinementFeedback final : public Feedback {
  public:

@@ -91,6 +91,7 @@ System::~System() = default;
 
 void System::buildChemistry(const Config& config, const SystemState* restored, const FilamentTerms& filament_terms) {
   const ChemistryConfig& cc = *config.chemistry;
+  checkSlicingResolution(membranes_, cc);  // before anything is built on the slices
   const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
   chemistry_model_ = cortex::chemistryModel(cc);
   const ReactionRange config_reactions = chemistry_model_.ranges.front();
@@ -124,7 +125,6 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
   // (confinement), unbinding reactions' on the vertices (surface species): disjoint.
   const RateFactors config_factors = chemistry_->claimRateFactors(config_reactions);
   feedback_.push_back(std::make_unique<ConfinementFeedback>(cc, *chemistry_, config_factors));
-  checkSlicingResolution(membranes_, cc);
   if (!cc.surfaces.empty()) {
     auto surfaces = std::make_unique<SurfaceSpeciesFeedback>(
         cc, config.membranes, *chemistry_, membranes_, config_factors,
