@@ -30,7 +30,8 @@ const std::string& MembraneBeadExclusion::name() const {
 void MembraneBeadExclusion::gatherPositions(const Evaluation& e) {
   // Which beads: chosen again whenever the network's layout changed (growth added a bead,
   // a branch a filament).
-  if (!built_ || network_.layout().version != built_layout_) {
+  const bool relaid = !built_ || network_.layout().version != built_layout_;
+  if (relaid) {
     beads_.clear();
     const auto& filaments = network_.filaments();
     for (std::size_t f = 0; f < filaments.size(); ++f) {
@@ -49,36 +50,47 @@ void MembraneBeadExclusion::gatherPositions(const Evaluation& e) {
     }
     built_ = false;
   }
-  const Index nv = membrane_.mesh().numVertices();
-  vertex_x_.resize(static_cast<std::size_t>(nv));
+  // What was read from the bodies at the last evaluation still holds.
+  const bool kept = !relaid && e.held != 0 && e.held == held_;
+  held_ = e.held;
   if (e.moves(membrane_)) {
+    const Index nv = membrane_.mesh().numVertices();
+    vertex_x_.resize(static_cast<std::size_t>(nv));
     const double* x = e.x + 3 * membrane_.offset();
     for (Index v = 0; v < nv; ++v) vertex_x_[v] = Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
-  } else {
+    vertex_move_ = -1.0;
+  } else if (!kept) {
     vertex_x_ = membrane_.mesh().positions();
+    vertex_move_ = -1.0;
   }
   // Where the network holds its beads: the positions when they do not move here, and
   // the side of the membrane they were on (crossesSinceHeld).
-  held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
-  network_.gather(held_beads_.data());
+  if (!kept) {
+    held_beads_.resize(3 * static_cast<std::size_t>(network_.numPoints()));
+    network_.gather(held_beads_.data());
+  }
+  if (kept && !e.moves(network_)) return;
   bead_x_.resize(beads_.size());
   const double* x = e.moves(network_) ? e.x + 3 * network_.offset() : held_beads_.data();
   for (std::size_t i = 0; i < beads_.size(); ++i) {
     const double* b = x + 3 * beads_[i];
     bead_x_[i] = Vec3(b[0], b[1], b[2]);
   }
+  bead_move_ = -1.0;
 }
 
-bool MembraneBeadExclusion::listIsStale() const {
+bool MembraneBeadExclusion::listIsStale() {
   if (!built_ || membrane_.connectivityVersion() != built_connectivity_ ||
       built_vertex_x_.size() != vertex_x_.size() || built_bead_x_.size() != bead_x_.size())
     return true;
-  double vertex_move = 0.0, bead_move = 0.0;
-  for (std::size_t v = 0; v < vertex_x_.size(); ++v)
-    vertex_move = std::max(vertex_move, (vertex_x_[v] - built_vertex_x_[v]).squaredNorm());
-  for (std::size_t b = 0; b < bead_x_.size(); ++b)
-    bead_move = std::max(bead_move, (bead_x_[b] - built_bead_x_[b]).squaredNorm());
-  return !(std::sqrt(vertex_move) + std::sqrt(bead_move) < skin_);
+  const auto largestMove = [](const std::vector<Vec3>& now, const std::vector<Vec3>& then) {
+    double move = 0.0;
+    for (std::size_t i = 0; i < now.size(); ++i) move = std::max(move, (now[i] - then[i]).squaredNorm());
+    return std::sqrt(move);
+  };
+  if (vertex_move_ < 0.0) vertex_move_ = largestMove(vertex_x_, built_vertex_x_);
+  if (bead_move_ < 0.0) bead_move_ = largestMove(bead_x_, built_bead_x_);
+  return !(vertex_move_ + bead_move_ < skin_);
 }
 
 void MembraneBeadExclusion::rebuild() {
@@ -95,6 +107,7 @@ void MembraneBeadExclusion::rebuild() {
   built_layout_ = network_.layout().version;
   built_vertex_x_ = vertex_x_;
   built_bead_x_ = bead_x_;
+  vertex_move_ = bead_move_ = 0.0;
   pairs_.clear();
   for (std::size_t b = 0; b < bead_x_.size(); ++b) {
     const Vec3& p = bead_x_[b];

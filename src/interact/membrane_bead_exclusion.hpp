@@ -85,9 +85,10 @@ class MembraneBeadExclusion final : public EnergyTerm {
     std::array<Vec3, 3> d_vertices{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   };
   PairEnergy pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, bool gradient) const;
-  // Positions of the vertices and selected beads at e (from e or from the bodies).
+  // Positions of the vertices and selected beads at e (from e or from the bodies; what
+  // was read from a body is kept while e.held stays the same).
   void gatherPositions(const Evaluation& e);
-  bool listIsStale() const;
+  bool listIsStale();
   // Whether a bead lies over a listed triangle on the other side than where the bodies
   // hold them (the last accepted positions): a step that carried a bead through the
   // membrane, or the membrane over a bead, which the energy, finite again on the far
@@ -102,6 +103,11 @@ class MembraneBeadExclusion final : public EnergyTerm {
   std::vector<Index> beads_;  // selected beads, as indices into the network's bead layout
   std::vector<Vec3> vertex_x_, bead_x_;
   std::vector<double> held_beads_;  // the network's own positions at the last evaluation
+  std::uint64_t held_ = 0;          // Evaluation::held of the last evaluation
+  // The largest moves since the last build (nm), or negative when not known: a body held
+  // through a relaxation moves nothing, and a filament relaxation beside a membrane of
+  // thousands of vertices spent more on measuring their moves than on its beads' forces.
+  double vertex_move_ = -1.0, bead_move_ = -1.0;
   std::vector<Pair> pairs_;
   // At the last build.
   bool built_ = false;

@@ -14,11 +14,16 @@ class Body;
 // body's points only, laid out from offset zero (a membrane's shape relaxation, the
 // filaments' relaxation under "auto"), and every other body stays at its stored
 // positions: terms between bodies read those from the body and give them no gradient.
+// `held`, when not zero, names the bodies' stored positions: evaluations with the same
+// number promise that none of them changed in between (one relaxation of a body alone,
+// which writes its result back only when it is done), so a term may keep what it read of
+// them instead of reading them again. Zero promises nothing.
 struct Evaluation {
   const double* x = nullptr;
   double* gradient = nullptr;
   std::uint64_t version = 0;
   const Body* alone = nullptr;
+  std::uint64_t held = 0;
   // Whether `body`'s points are in x (and get gradient): every body's unless one is alone.
   bool moves(const Body& body) const { return !alone || alone == &body; }
 };

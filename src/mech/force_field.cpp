@@ -17,11 +17,11 @@ double ForceField::evaluateTerms(const std::vector<EnergyTerm*>& terms, const Ei
 }
 
 double ForceField::evaluate(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                            const Body* alone, Eigen::Index first) {
+                            const Body* alone, Eigen::Index first, std::uint64_t held) {
   const auto start = std::chrono::steady_clock::now();
   ++(gradient ? force_evaluations_ : energy_evaluations_);
   if (gradient) gradient->setZero(x.size());
-  const Evaluation e{x.data(), gradient ? gradient->data() : nullptr, ++version_, alone};
+  const Evaluation e{x.data(), gradient ? gradient->data() : nullptr, ++version_, alone, held};
   double total = 0.0;
   for (EnergyTerm* term : terms) total += term->evaluate(e);
   if (gradient) {

@@ -47,13 +47,14 @@ class ForceField final : public Objective {
   // beside a 3.5k-vertex membrane did ten times the vector work of its forces.
   class Alone final : public Objective {
    public:
+    // The bodies' stored positions must not change while it is evaluated (Evaluation::held).
     Alone(ForceField& field, std::vector<EnergyTerm*> terms, const Body& body, Eigen::Index first)
-        : field_(field), terms_(std::move(terms)), body_(body), first_(first) {}
+        : field_(field), terms_(std::move(terms)), body_(body), first_(first), held_(field.newVersion()) {}
     double value(const Eigen::VectorXd& x) override {
-      return field_.evaluate(terms_, x, nullptr, &body_, first_);
+      return field_.evaluate(terms_, x, nullptr, &body_, first_, held_);
     }
     double valueAndGradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) override {
-      return field_.evaluate(terms_, x, &g, &body_, first_);
+      return field_.evaluate(terms_, x, &g, &body_, first_, held_);
     }
 
    private:
@@ -61,6 +62,7 @@ class ForceField final : public Objective {
     std::vector<EnergyTerm*> terms_;
     const Body& body_;
     Eigen::Index first_;
+    std::uint64_t held_;
   };
   // A version no evaluation has used yet, for callers that evaluate terms themselves (the
   // membrane relaxation): terms cache derived geometry by version.
@@ -87,9 +89,9 @@ class ForceField final : public Objective {
 
  private:
   // Terms at x (every body's coordinates, or `alone`'s from offset zero, whose first
-  // coordinate is `first` in the whole vector's frozen mask).
+  // coordinate is `first` in the whole vector's frozen mask; `held`: Evaluation::held).
   double evaluate(const std::vector<EnergyTerm*>& terms, const Eigen::VectorXd& x, Eigen::VectorXd* gradient,
-                  const Body* alone, Eigen::Index first);
+                  const Body* alone, Eigen::Index first, std::uint64_t held = 0);
 
   std::vector<std::unique_ptr<EnergyTerm>> terms_;
   std::vector<EnergyTerm*> all_;  // the same, for evaluateTerms

@@ -16,7 +16,8 @@ NormalDisplacementProblem::NormalDisplacementProblem(Membrane& m, ForceField& fi
       exact_area_(exact_area),
       exact_volume_(exact_volume),
       p_(p),
-      kept_(kept_columns) {
+      kept_(kept_columns),
+      held_(field.newVersion()) {
   const std::vector<double> x0 = flatCoordinates(m.mesh().positions());
   x0_ = Eigen::Map<const Eigen::VectorXd>(x0.data(), static_cast<Eigen::Index>(x0.size()));
   normals_ = vertexNormals(m.mesh());
@@ -38,7 +39,7 @@ double NormalDisplacementProblem::fullValueAndGradient(const Eigen::VectorXd& u)
   const ScopedTimer timer{force_seconds};
   positionsAt(u);
   grad3_.setZero();
-  const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_};
+  const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_, held_};
   evaluated_u_ = u;
   evaluated_version_ = e.version;
   double total = 0.0;

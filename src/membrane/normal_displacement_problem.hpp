@@ -20,6 +20,8 @@ namespace cortex {
 class NormalDisplacementProblem final : public ConstrainedProblem {
  public:
   // `kept_columns`: where P^-1 of the rigid rows is kept between outer steps (optional).
+  // No body's stored positions may change while it is evaluated (Evaluation::held): the
+  // membrane's are written back once its evaluations are done.
   NormalDisplacementProblem(Membrane& m, ForceField& field, std::vector<EnergyTerm*> terms, bool exact_area,
                             bool exact_volume, const SobolevPreconditioner& p,
                             ShapeRelaxationWarmStart* kept_columns = nullptr);
@@ -64,6 +66,7 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   Eigen::VectorXd x0_, x_, grad3_;
   Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
   std::uint64_t evaluated_version_ = 0;
+  std::uint64_t held_;  // Evaluation::held of every evaluation
   std::vector<Vec3> normals_, face_normal0_;
   std::vector<char> fixed_;
   MeshGeometry geometry_;

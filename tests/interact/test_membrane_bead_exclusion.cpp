@@ -1,9 +1,9 @@
 // The membrane–bead excluded volume as a term: the energy of a bead over a large flat
 // membrane against the closed form of an unbounded plane less the part beyond the
 // cut-off; the same energy and gradients whether both bodies move or one is relaxed
-// alone; the Verlet list complete after large random moves and a remeshing (the energy
-// equals that of a term built afresh, to the last bit); infinite energy for a bead on
-// the membrane.
+// alone; the Verlet list complete after large random moves and a remeshing, and what was
+// kept of a held body read again in the next relaxation (the energy equals that of a
+// term built afresh, to the last bit); infinite energy for a bead on the membrane.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -145,6 +145,54 @@ TEST(MembraneBeadExclusion, EnergyDoesNotDependOnWhenThePairsWereListed) {
   EXPECT_GT(energies, 150);
   EXPECT_GT(kept.rebuilds(), 10);
   EXPECT_LT(kept.rebuilds(), 190);
+}
+
+// Through one relaxation of a body alone (one Evaluation::held), the term keeps what it
+// read of the held bodies; a new relaxation (another held number) must read them again.
+// Each relaxation here moves its own body at random between evaluations, and the held
+// body was moved in between relaxations (by up to 10 nm, the list's skin): every energy
+// equals that of a term built afresh, to the last bit.
+TEST(MembraneBeadExclusion, AHeldBodyIsReadAgainInTheNextRelaxation) {
+  Scene s(300.0, 15.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int f = 0; f < 20; ++f)
+    s.network->addFilament(makeStraightFilament(0, Vec3(120 * u(rng), 120 * u(rng), -40.0 + 10 * u(rng)),
+                                                Vec3(0.3 * u(rng), 0.3 * u(rng), 1.0).normalized(), 12, 3, 2.7));
+  s.layOut();
+  MembraneBeadExclusion kept(*s.membrane, *s.network, {});
+  std::uint64_t version = 0;
+  int compared = 0, pushing = 0;
+  for (std::uint64_t relaxation = 1; relaxation <= 12; ++relaxation) {
+    const bool membrane_alone = relaxation % 2 == 1;
+    Body& alone = membrane_alone ? static_cast<Body&>(*s.membrane) : static_cast<Body&>(*s.network);
+    Body& held = membrane_alone ? static_cast<Body&>(*s.network) : static_cast<Body&>(*s.membrane);
+    // Between relaxations the held body moves where the last one left it.
+    std::vector<double> h(3 * static_cast<std::size_t>(held.numPoints()));
+    held.gather(h.data());
+    const double shift = 10.0 * u(rng);
+    for (std::size_t i = 2; i < h.size(); i += 3) h[i] += shift;
+    held.scatter(h.data());
+    // As the run relaxes a body alone: its offset moved, nothing else rebuilt.
+    const BodyAtOffsetZero at_zero(alone);
+    std::vector<double> base(3 * static_cast<std::size_t>(alone.numPoints()));
+    alone.gather(base.data());
+    for (int step = 0; step < 10; ++step) {
+      std::vector<double> x = base;
+      const double scale = std::pow(10.0, -2.0 + 3.0 * (0.5 + 0.5 * u(rng)));
+      for (double& c : x) c += scale * u(rng);
+      MembraneBeadExclusion fresh(*s.membrane, *s.network, {});
+      const double e_kept = kept.evaluate({x.data(), nullptr, ++version, &alone, relaxation});
+      const double e_fresh = fresh.evaluate({x.data(), nullptr, ++version, &alone, 0});
+      if (!std::isfinite(e_fresh)) continue;  // a step onto or through the membrane
+      ASSERT_EQ(e_kept, e_fresh) << "relaxation " << relaxation << ", step " << step;
+      ++compared;
+      pushing += e_fresh > 0.0;
+    }
+  }
+  EXPECT_GT(compared, 80);
+  EXPECT_GT(pushing, 40);  // beads within the cut-off: the energies compared are not all zero
+  EXPECT_GT(kept.rebuilds(), 6);
 }
 
 TEST(MembraneBeadExclusion, AStepThroughTheMembraneIsRefused) {
