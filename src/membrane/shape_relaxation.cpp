@@ -31,6 +31,12 @@ constexpr double kSettledStrain = 0.005;  // converged only after an outer step 
 constexpr double kRemeshStrain = 0.3;     // remesh at convergence if the shape changed this much
 constexpr double kRemeshAnyway = 1.0;     // remesh between outer steps beyond this
 constexpr double kKeepRigidColumnsStrain = 0.05;  // largest move after which the rigid rows' P^-1 columns are kept
+// Tangential relocation between outer steps only after a move larger than this: a
+// relocation moves the vertices within the surface, which changes the discrete energy, and
+// the next outer step spent 3-8 iterations relaxing that away after every small step
+// (docs/membrane.md); a shape that barely moved keeps its mesh, still remeshed on the
+// summed strain and the angle bounds below.
+constexpr double kTidyStrain = 0.05;
 constexpr int kMaxOuter = 400;
 constexpr long kMaxInnerIterations = 300;  // per outer step
 constexpr int kRefactorInterval = 10;      // outer steps between factorizations
@@ -244,7 +250,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       ++rep.remeshes;
       moved_since_remesh = 0.0;
       memory.clear();
-    } else {
+    } else if (moved > kTidyStrain) {
       relocateTangentially(m.mesh(), &m.fixedVertices());
     }
   }
