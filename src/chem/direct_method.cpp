@@ -67,9 +67,8 @@ void DirectMethodEngine::advance(double t_end) {
   if (t_end == time_) return;
   checkLoad(sum(), t_end - time_);
   double t = time_;
-  const std::int64_t start = events_;
-  while (true) {
-    if (((events_ - start) & 0xFFFF) == 0) checkFired(events_ - start);
+  for (std::int64_t n = 0;; ++n) {
+    if (n > 0 && n % kLoadCheckInterval == 0) checkLoad(sum(), t_end - t, n);
     const double total = sum();
     if (!(total > 0.0)) break;
     t += rng_.exponential(total);

@@ -284,8 +284,8 @@ ChemistryEngine::Load EngineBase::load() const {
   return out;
 }
 
-void EngineBase::checkLoad(double total, double dt) const {
-  const double expected = total * dt;
+void EngineBase::checkLoad(double total, double dt, std::int64_t drawn) const {
+  const double expected = static_cast<double>(drawn) + total * dt;
   if (expected <= event_limit_) return;
   const Load l = load();
   std::string culprit = "the largest channel is " + l.largest_channel + " at " + fmt::format("{:.3g}", l.largest) +
@@ -297,15 +297,13 @@ void EngineBase::checkLoad(double total, double dt) const {
                           "(its potential, pair interaction or curvature energy in hops and unbinding): check their "
                           "heights; of the plain rates, {}",
                           total - l.total, total, culprit);
-  throw RunError("chemistry: about " + fmt::format("{:.3g}", expected) + " events expected in a window of " +
-                 fmt::format("{:g}", dt) + " s, over the limit of " + fmt::format("{:g}", event_limit_) +
-                 " (chemistry.max_events_per_window); " + culprit);
-}
-
-void EngineBase::eventsOverflow(std::int64_t fired) const {
-  throw RunError(fmt::format("chemistry: {} events in one window, over the limit of {:g} "
-                             "(chemistry.max_events_per_window): a reaction network growing without bound?",
-                             fired, event_limit_));
+  const std::string count =
+      drawn == 0 ? fmt::format("about {:.3g} events expected in a window of {:g} s", expected, dt)
+                 : fmt::format("{} events drawn in this window and about {:.3g} more expected in the {:.3g} s left of "
+                               "it (a reaction network growing without bound?)",
+                               drawn, total * dt, dt);
+  throw RunError(fmt::format("chemistry: {}, over the limit of {:g} (chemistry.max_events_per_window); {}", count,
+                             event_limit_, culprit));
 }
 
 ChemistryState EngineBase::state() const {

@@ -182,10 +182,9 @@ void NextSubvolumeEngine::advance(double t_end) {
   checkLoad(sum, t_end - time_);
   heap_.assign(first_times_);
   advancing_ = true;
-  const std::int64_t start = events_;
-  for (std::int64_t n = 0; heap_.topTime() <= t_end; ++n) {
+  for (std::int64_t n = 1; heap_.topTime() <= t_end; ++n) {
     fire(heap_.topId(), heap_.topTime());
-    if ((n & 0xFFFFF) == 0) checkFired(events_ - start);
+    if (n % kLoadCheckInterval == 0) checkLoad(totalRate(), t_end - now_, n);
   }
   advancing_ = false;
   time_ = t_end;

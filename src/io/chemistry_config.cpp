@@ -23,8 +23,12 @@ CompartmentGrid readGrid(const ConfigReader& r) {
       g.shape[k] = static_cast<int>(s[k]);
     }
   }
-  if (static_cast<double>(g.shape[0]) * g.shape[1] * g.shape[2] > 1e8)
-    r.fail("shape", "more than 1e8 compartments");
+  // A compartment costs ~350 bytes with chemistry alone, ~900 with a membrane's slicing
+  // and surface species: 1e7 of them take 3.5-9 GB and half a minute to set up (1e8 did not
+  // finish, `cortex check` included).
+  const double compartments = static_cast<double>(g.shape[0]) * g.shape[1] * g.shape[2];
+  if (compartments > 1e7)
+    r.fail("shape", fmt::format("{:.3g} compartments, more than 1e7 (~350-900 bytes each in memory)", compartments));
   r.finish();
   return g;
 }

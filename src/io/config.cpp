@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "io/chemistry_config.hpp"
 #include "io/config_override.hpp"
@@ -24,7 +26,9 @@ SimulationConfig readSimulation(const ConfigReader& r) {
   s.checkpoint_interval = r.number("checkpoint_interval", 0.0, Range::nonNegative(), "s");
   s.temperature = r.number("temperature", s.temperature, Range::positive(), "K");
   if (s.end_time > 0 && s.end_time / s.chemistry_window > 1e9)
-    r.fail("chemistry_window", "is so small that the run would take more than 1e9 windows");
+    r.fail(r.has("end_time") ? "end_time" : "chemistry_window",
+           fmt::format("{:g} s in windows of {:g} s (chemistry_window) is more than 1e9 windows", s.end_time,
+                       s.chemistry_window));
   r.finish();
   return s;
 }
@@ -47,21 +51,35 @@ MinimizerSettings readMechanics(const ConfigReader& r) {
   return m;
 }
 
+// A generated membrane's area (nm²): exact for spheres and planes, Knud Thomsen's formula
+// (within 1.1%) for ellipsoids.
+double shapeArea(const MembraneConfig& m) {
+  if (m.shape == "plane") return m.size[0] * m.size[1];
+  constexpr double p = 1.6075;
+  const double a = std::pow(m.radii[0], p), b = std::pow(m.radii[1], p), c = std::pow(m.radii[2], p);
+  return 4.0 * constants::kPi * std::pow((a * b + a * c + b * c) / 3.0, 1.0 / p);
+}
+
+// The largest generated mesh (vertices): 100 times the largest membrane benchmarked (45k).
+constexpr double kMaxGeneratedVertices = 5e6;
+
 void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::path& base_dir) {
   m.shape = r.choice("shape", "sphere", {"sphere", "ellipsoid", "plane", "mesh"});
   const bool generated = m.shape != "mesh";
+  // Coordinates beyond a metre (1e9 nm) keep too few digits for a mesh of nanometres.
+  const Range coordinate{-1e9, 1e9}, extent{0.0, 1e9, true, false};
   if (m.shape != "mesh") {
-    const auto c = r.has("center") ? r.numbers("center", 3, Range{}, "nm") : std::vector<double>{0, 0, 0};
+    const auto c = r.has("center") ? r.numbers("center", 3, coordinate, "nm") : std::vector<double>{0, 0, 0};
     m.center = Vec3(c[0], c[1], c[2]);
   }
   if (m.shape == "sphere") {
-    m.radii = Vec3::Constant(r.requiredNumber("radius", Range::positive(), "nm"));
+    m.radii = Vec3::Constant(r.requiredNumber("radius", extent, "nm"));
     m.mesher = r.choice("mesher", "marching_tetrahedra", {"marching_tetrahedra", "icosphere"});
   } else if (m.shape == "ellipsoid") {
-    const auto a = r.numbers("radii", 3, Range::positive(), "nm");
+    const auto a = r.numbers("radii", 3, extent, "nm");
     m.radii = Vec3(a[0], a[1], a[2]);
   } else if (m.shape == "plane") {
-    const auto s = r.numbers("size", 2, Range::positive(), "nm");
+    const auto s = r.numbers("size", 2, extent, "nm");
     m.size = {s[0], s[1]};
   } else {
     const std::string file = r.string("file", "");
@@ -71,10 +89,17 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
   if (m.shape == "plane" || m.shape == "mesh") r.choice("boundary", "fixed", {"fixed"});
   if (generated) {
     m.mesh_size = r.requiredNumber("mesh_size", Range::positive(), "nm");
-    const double extent = m.shape == "plane" ? std::min(m.size[0], m.size[1]) : m.radii.minCoeff();
-    if (m.mesh_size > extent)
+    const double smallest = m.shape == "plane" ? std::min(m.size[0], m.size[1]) : m.radii.minCoeff();
+    if (m.mesh_size > smallest)
       r.fail("mesh_size", fmt::format("({:g} nm) must not exceed the membrane's smallest "
-                                      "radius or side ({:g} nm)", m.mesh_size, extent));
+                                      "radius or side ({:g} nm)", m.mesh_size, smallest));
+    // Equilateral triangles of side h: about 2A/(√3 h²) vertices. Past the limit meshing
+    // alone takes minutes and gigabytes (a mesh_size in the wrong unit, most likely).
+    const double vertices = 2.0 * shapeArea(m) / (std::sqrt(3.0) * m.mesh_size * m.mesh_size);
+    if (vertices > kMaxGeneratedVertices)
+      r.fail("mesh_size", fmt::format("({:g} nm) would mesh this shape (area {:.3g} nm²) with about {:.3g} vertices, "
+                                      "over the limit of {:g}: is it in nm?",
+                                      m.mesh_size, shapeArea(m), vertices, kMaxGeneratedVertices));
   } else {
     // A loaded mesh keeps its own triangles; mesh_size only sets the remesher's target
     // on flat parts (default: the file's mean edge length).

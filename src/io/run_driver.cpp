@@ -155,6 +155,19 @@ void logThroughput(const System& system, double wall, bool resumed) {
                  c.unconverged_minimizations, c.minimizations);
 }
 
+// The checks a System makes as it is built (meshes, slicing, placement, regions) name
+// the key but not the file: their errors get the config's name in front, like the
+// reader's own.
+std::unique_ptr<System> buildSystem(const Config& config, const SystemState* restored = nullptr) {
+  try {
+    return std::make_unique<System>(config, restored);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (config.source.empty() || what.rfind(config.source, 0) == 0) throw;
+    throw InputError(config.source + ": " + what);
+  }
+}
+
 }  // namespace
 
 RunOutcome runSimulation(const RunRequest& request) {
@@ -204,7 +217,7 @@ RunOutcome runSimulation(const RunRequest& request) {
   }
   header.config_toml = config.effective_toml;
   // Everything that can refuse the input comes before anything is written.
-  auto system = std::make_unique<System>(config, checkpoint ? &checkpoint->state : nullptr);
+  auto system = buildSystem(config, checkpoint ? &checkpoint->state : nullptr);
   checkChemistryLoad(*system, config);
   if (!resume) prepareOutputFolder(outdir, request.overwrite);
 
@@ -267,7 +280,7 @@ std::string checkConfig(const std::filesystem::path& file, const std::vector<std
 std::string checkLoadedConfig(const Config& config, const std::filesystem::path& file) {
   // Everything a run builds before its first step (meshes, filament placement, engines)
   // is built here too, so that check and run refuse the same inputs.
-  const auto system = std::make_unique<System>(config);
+  const auto system = buildSystem(config);
   checkChemistryLoad(*system, config);
   const std::string chemistry =
       system->chemistry() ? fmt::format(", {} species, {} reactions in {} compartments",

@@ -207,8 +207,14 @@ void SurfaceSpeciesFeedback::update(System& system) {
                                             membrane.mechanics().bending.estimator);
           setSensingRows(c, membrane, cells.graph, curvature, system.time(), interaction);
         }
-        feed(j, c.curvature ? "curvature or interaction" : "interaction",
-             [&] { engine_.setSurfaceInteraction(s.species[j], std::move(interaction)); });
+        // The external potential rides in the same field: name every block that fed it.
+        std::string blocks = c.curvature ? "curvature" : "";
+        if (c.interaction) blocks += std::string(blocks.empty() ? "" : ", ") + "interaction";
+        if (!c.interaction && !c.curvature) blocks = "cross_interaction";  // coupled to another species only
+        if (!potential[j].empty()) blocks += std::string(blocks.empty() ? "" : ", ") + "potential";
+        const std::size_t last = blocks.rfind(", ");
+        if (last != std::string::npos) blocks.replace(last, 2, " or ");
+        feed(j, blocks.c_str(), [&] { engine_.setSurfaceInteraction(s.species[j], std::move(interaction)); });
         continue;
       }
       if (potential[j].empty()) continue;
@@ -225,7 +231,7 @@ void SurfaceSpeciesFeedback::update(System& system) {
         feed(j, "cross_interaction",
              [&] { engine_.setSurfaceCoupling(s.species[j], s.species[other], std::move(kernel.self), std::move(kernel.pair)); });
       }
-    setUnbindingFactors(static_cast<Index>(k), potential, n, system.time());
+    setUnbindingFactors(static_cast<Index>(k), membrane.name(), potential, n, system.time());
   }
 }
 
@@ -262,8 +268,9 @@ void SurfaceSpeciesFeedback::setSensingRows(const SurfaceSpeciesConfig& c, const
   }
 }
 
-void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::vector<std::vector<double>>& potentials,
-                                                 Index vertices, double t) const {
+void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::string& membrane_name,
+                                                 const std::vector<std::vector<double>>& potentials, Index vertices,
+                                                 double t) const {
   const Index start = engine_.regionStart(surface + 1);
   for (const Unbinding& u : unbinding_) {
     if (u.surface != surface) continue;
@@ -272,10 +279,16 @@ void SurfaceSpeciesFeedback::setUnbindingFactors(Index surface, const std::vecto
       for (const auto& [j, count] : u.reactants) exponent += count * potentials[j][v];
       // e^700 is near the largest double: a copy that bound so firmly would unbind at
       // more than 1e300 /s.
-      if (!(exponent < 700.0))
-        throw RunError(fmt::format("t = {:.6g} s: membrane species energy {:.3g} k_BT at a vertex: unbinding at "
-                                   "r e^(beta V) overflows; check the potential's parameters",
-                                   t, exponent));
+      if (!(exponent < 700.0)) {
+        const Surface& s = surfaces_[static_cast<std::size_t>(surface)];
+        std::string species;
+        for (const auto& [j, count] : u.reactants)
+          species += fmt::format("{}\"{}\" (membrane.{}.species.{}.potential)", species.empty() ? "" : ", ",
+                                 s.configs[static_cast<std::size_t>(j)].name, s.membrane, j);
+        throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": the potential of {} is {:.3g} k_BT at vertex {}: "
+                                   "unbinding at r e^(beta V) overflows there; check the potential's parameters",
+                                   t, membrane_name, species, exponent, v));
+      }
       factors_.set(u.reaction, start + v, std::exp(exponent));
     }
   }

@@ -74,9 +74,10 @@ class SurfaceSpeciesFeedback final : public Feedback {
     Index surface;
     std::vector<std::pair<Index, int>> reactants;  // (index in Surface::species, count) with a potential
   };
-  // Throws RunError when a factor e^{βV} would overflow.
-  void setUnbindingFactors(Index surface, const std::vector<std::vector<double>>& potentials, Index vertices,
-                           double t) const;
+  // Throws RunError, naming the membrane, vertex and species' potential keys, when a factor
+  // e^{βV} would overflow.
+  void setUnbindingFactors(Index surface, const std::string& membrane_name,
+                           const std::vector<std::vector<double>>& potentials, Index vertices, double t) const;
 
   CompartmentGrid grid_;
   ChemistryEngine& engine_;

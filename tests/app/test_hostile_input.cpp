@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <string>
 
 #include "app/cli_helpers.hpp"
@@ -174,6 +175,51 @@ TEST(HostileInput, UnboundedChemistryIsRefusedNamingTheChannel) {
                              "diffusion of \"A\"", "diffusion 1e300");
   expectRefusedInCheckAndRun(dir, std::string(kSpecies) + "[[reaction]]\nequation = \"-> A\"\nrate = 1.0e12\n",
                              "max_events_per_window", "zeroth-order rate 1e12");
+}
+
+// Sizes whose meshes or grids would take gigabytes and minutes to build: `check` ran for
+// minutes or never returned. Each is refused at once naming the key (a mesh_size in the
+// wrong unit, a membrane a metre away or across, a grid of 2.7e7 compartments, a run of
+// 1e300 s).
+TEST(HostileInput, SizesThatCannotBeBuiltAreRefusedNamingTheKey) {
+  TempDir dir;
+  expectRefusedInCheckAndRun(dir, replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 0.1"), "membrane.0.mesh_size",
+                             "mesh_size 0.1 nm on a 200 nm sphere (5e7 vertices)");
+  expectRefusedInCheckAndRun(dir, replaced(kVesicle, "radius = 200.0", "radius = 1.0e300"), "membrane.0.radius",
+                             "radius 1e300");
+  expectRefusedInCheckAndRun(dir, replaced(kVesicle, "radius = 200.0", "radius = 200.0\ncenter = [1.0e300, 0, 0]"),
+                             "membrane.0.center", "center 1e300");
+  expectRefusedInCheckAndRun(dir, replaced(kSpecies, "shape = [2, 2, 2]", "shape = [300, 300, 300]"),
+                             "compartments.shape", "2.7e7 compartments");
+  expectRefusedInCheckAndRun(dir, replaced(kSpecies, "end_time = 0.02", "end_time = 1.0e300"), "simulation.end_time",
+                             "end_time 1e300 s");
+}
+
+// A network that explodes within a window passes the load check at its start (little to
+// fire yet) and then ran for hours; it stops with exit 1 naming the limit, within seconds.
+// The same when a crowding cap turns the growth into void events, which the limit did not
+// count: that run went on for ever, deaf to SIGTERM (the stop is taken between windows).
+TEST(HostileInput, ChemistryExplodingWithinAWindowStops) {
+  TempDir dir;
+  const std::string in_the_cytosol =
+      std::string(kSpecies) + "[[reaction]]\nequation = \"A -> 2 A\"\nrate = 1.0e4\n";
+  const std::string on_a_crowded_membrane = std::string(kVesicle) +
+                                            "[[membrane.species]]\nname = \"M\"\ndiffusion = 1.0e5\n"
+                                            "footprint = 100.0\ndensity = 100.0\n"
+                                            "[[reaction]]\nequation = \"M -> 2 M\"\nrate = 1.0e6\n";
+  for (const std::string& text : {in_the_cytosol, on_a_crowded_membrane}) {
+    const fs::path config = writeConfig(dir.path(), text, "exploding.toml");
+    const RunResult check = runCortex({"check", config.string()}, dir.path());
+    EXPECT_EQ(check.exit_code, 0) << describe(check);
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult run =
+        runConfig(config, dir / "out", {"--overwrite", "--set", "chemistry.max_events_per_window=3e6"}, dir.path());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(run.exit_code, 1) << describe(run);
+    EXPECT_NE(run.err.find("max_events_per_window"), std::string::npos) << describe(run);
+    EXPECT_NE(run.err.find("growing without bound"), std::string::npos) << describe(run);
+    EXPECT_LT(seconds, 30.0);  // ~10⁶ events: about a second; before, hours or never
+  }
 }
 
 // A run that fails before its first checkpoint does not claim to keep one.

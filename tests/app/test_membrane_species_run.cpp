@@ -196,9 +196,14 @@ TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
                    "species \"P\": its potential", "not finite");
   expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.1\nrange = 1e300\n"),
                    "species \"P\": its interaction", "not finite");
+  // A potential beside an interaction rides in its field: both blocks are named (the
+  // potential's fault was blamed on the interaction).
+  expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.1\nrange = 30.0\n"
+                             "[membrane.species.potential]\nwidth = 1e-200\nheight = 2.0\ncenter = 200.0\n"),
+                   "species \"P\": its interaction or potential", "not finite");
   expectCheckFails(patchWith("[membrane.species.potential]\ntype = \"ramp\"\nslope = 10.0\ncenter = 200.0\n",
                              "[[reaction]]\nequation = \"P -> C\"\nrate = 1.0\n"),
-                   "unbinding at r e^(beta V) overflows", "potential");
+                   "\"P\" (membrane.0.species.0.potential)", "unbinding at r e^(beta V) overflows");
   // A strong attraction multiplies hops and unbinding past the events limit: check says
   // so as the run would at its first window (check passed it before).
   expectCheckFails(patchWith("footprint = 20.0\n[membrane.species.interaction]\nheight = 5.0\nrange = 30.0\n",
