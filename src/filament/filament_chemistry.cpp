@@ -127,7 +127,9 @@ double FilamentChemistry::catchFactor(const MotorType& m, double tension, int he
   if (heads <= 0) return tension > 0.0 ? std::exp(-tension / m.catch_force) : 1.0;
   if (m.off_rate <= 0.0) return 0.0;
   const double n = heads, kh = m.head_binding_rate;
-  const double unloaded = n * kh / (std::pow(1.0 + kh / m.off_rate, n) - 1.0) / m.off_rate;
+  // (1 + x)^N − 1 as expm1(N log1p(x)): exact where x = k_h/k_off is below round-off
+  // (the pow form gave 0/0 and a rate factor that was not a number).
+  const double unloaded = n * kh / std::expm1(n * std::log1p(kh / m.off_rate)) / m.off_rate;
   return tension > 0.0 ? unloaded * std::exp(-tension / (boundHeads(m, tension, heads) * m.catch_force)) : unloaded;
 }
 
@@ -135,7 +137,7 @@ double FilamentChemistry::walkFactor(const MotorType& m, double tension, int hea
   double ensemble = 1.0;
   if (heads > 0) {
     const double bound = boundHeads(m, tension, heads);
-    ensemble = std::max(0.0, (heads - bound) / bound);  // (N - N_b)/N_b
+    ensemble = std::clamp((heads - bound) / bound, 0.0, kMaxFactor);  // (N - N_b)/N_b, capped like the others
   }
   if (tension <= 0.0) return ensemble;
   return ensemble * std::max(0.0, (m.stall_force - tension) / (m.stall_force + tension / m.hill_alpha));

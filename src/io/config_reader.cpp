@@ -33,8 +33,10 @@ bool Range::contains(double v) const {
   return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
 }
 
-std::string Range::describe() const {
-  const bool has_lo = lo > -1e299, has_hi = hi < 1e299;
+std::string Range::describe(double value) const {
+  // The default bounds (±1e300) are named only when the value is beyond them: "must be
+  // >= 0, got 7.6e+301" stated the wrong problem.
+  const bool has_lo = lo > -1e299 || value < lo, has_hi = hi < 1e299 || value > hi;
   if (has_lo && has_hi)
     return fmt::format("in {}{:g}, {:g}{}", lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]");
   if (has_lo) return fmt::format("{} {:g}", lo_open ? ">" : ">=", lo);
@@ -92,7 +94,7 @@ double asFiniteNumber(const toml::node& n, const ConfigReader& r, const std::str
 
 double ConfigReader::requiredNumber(const std::string& key, Range range, const char* unit) const {
   const double v = asFiniteNumber(node(key), *this, key);
-  if (!range.contains(v)) fail(key, fmt::format("must be {} {}, got {:g}", range.describe(), unit, v));
+  if (!range.contains(v)) fail(key, fmt::format("must be {} {}, got {:g}", range.describe(v), unit, v));
   return v;
 }
 
@@ -165,7 +167,7 @@ std::vector<double> ConfigReader::numbers(const std::string& key, std::size_t co
   std::vector<double> out;
   for (const toml::node& n : *a) {
     const double v = asFiniteNumber(n, *this, key);
-    if (!range.contains(v)) fail(key, fmt::format("entries must be {} {}, got {:g}", range.describe(), unit, v));
+    if (!range.contains(v)) fail(key, fmt::format("entries must be {} {}, got {:g}", range.describe(v), unit, v));
     out.push_back(v);
   }
   return out;
@@ -183,7 +185,7 @@ Schedule ConfigReader::schedule(const std::string& key, std::optional<double> fa
       fail(key, "must be a number or a list of [time, value] pairs, e.g. [[0.0, 1.0], [10.0, 0.6]]");
     const double t = asFiniteNumber(*pair->get(0), *this, key);
     const double v = asFiniteNumber(*pair->get(1), *this, key);
-    if (!range.contains(v)) fail(key, fmt::format("values must be {} {}, got {:g}", range.describe(), unit, v));
+    if (!range.contains(v)) fail(key, fmt::format("values must be {} {}, got {:g}", range.describe(v), unit, v));
     if (!points.empty() && t <= points.back().first)
       fail(key, fmt::format("times must increase strictly ({:g} s follows {:g} s)", t, points.back().first));
     points.emplace_back(t, v);

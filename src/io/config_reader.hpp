@@ -21,7 +21,7 @@ struct Range {
   static Range positive() { return {0.0, 1e300, true, false}; }
   static Range nonNegative() { return {0.0, 1e300, false, false}; }
   bool contains(double v) const;
-  std::string describe() const;
+  std::string describe(double value) const;  // the bounds a value out of range missed
 };
 
 class ConfigReader {

@@ -23,9 +23,7 @@ void Translator::speciesOfChemistry() {
         if (std::isspace(static_cast<unsigned char>(c)) || c == '/' || c == '+' || c == '>' || c == '"')
           throw InputError(fmt::format("{}: species name '{}': cortex names have no spaces, '/', '+', '>'", e.where, name));
       species_[name] = {bulk ? "BULK" : "DIFFUSING", e.where};
-      const double copies = number(e, 1, "COPYNUMBER");
-      if (copies < 0 || copies != std::floor(copies))
-        throw InputError(fmt::format("{}: {}: COPYNUMBER must be an integer >= 0", e.where, e.key));
+      const long long copies = count(number(e, 1, "COPYNUMBER"), e.where, e.key + " COPYNUMBER");
       double diffusion = 0;
       std::size_t next = 2;
       if (!bulk) diffusion = number(e, next++, "DIFFCOEFF");
@@ -37,7 +35,7 @@ void Translator::speciesOfChemistry() {
       for (const auto& v : e.values)
         if (!toNumber(v) && &v != &e.values[0]) qualifier = upperCase(v);
       std::ostringstream s;
-      s << "\n[[species]]\nname = " << quoted(name) << "\ncopies = " << static_cast<long long>(copies) << "\n";
+      s << "\n[[species]]\nname = " << quoted(name) << "\ncopies = " << copies << "\n";
       if (bulk) {
         // cortex has no well-mixed species: a fast-diffusing one stands in for it.
         const double d_fast = 1e8;

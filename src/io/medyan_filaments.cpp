@@ -94,7 +94,7 @@ void Translator::filamentType() {
     // Initial filaments
     if (const auto n = value("NUMFILAMENTS"); n && *n > 0) {
       const double cyl = value("FILAMENTLENGTH").value_or(1.0);
-      toml_ << "\n[[filaments]]\ntype = \"actin\"\ncount = " << static_cast<long long>(*n)
+      toml_ << "\n[[filaments]]\ntype = \"actin\"\ncount = " << count(*n, whereOf("NUMFILAMENTS"), "NUMFILAMENTS")
            << "\nlength = " << num(cyl * cylinder_size_) << "\n";
       done(whereOf("NUMFILAMENTS"), fmt::format("NUMFILAMENTS, FILAMENTLENGTH {} cylinders -> filaments.count = {}, "
                                                 "filaments.length = {} nm (random, straight)",
@@ -189,7 +189,8 @@ void Translator::motors() {
                "cortex's walking follows the Hill stall law");
     const auto hmin = listValue("NUMMOTORHEADSMIN", i), hmax = listValue("NUMMOTORHEADSMAX", i);
     if (hmin && hmax && *hmin >= 1 && *hmax >= *hmin) {
-      toml_ << "heads_min = " << static_cast<long long>(*hmin) << "\nheads_max = " << static_cast<long long>(*hmax)
+      toml_ << "heads_min = " << count(*hmin, whereOf("NUMMOTORHEADSMIN"), "NUMMOTORHEADSMIN")
+            << "\nheads_max = " << count(*hmax, whereOf("NUMMOTORHEADSMAX"), "NUMMOTORHEADSMAX")
            << "\nhead_binding_rate = " << num(b.walks ? b.walk : 0.2) << "\n";
       done(whereOf("NUMMOTORHEADSMIN"),
            fmt::format("NUMMOTORHEADSMIN/MAX -> motor.{}.heads_min = {}, heads_max = {}; head_binding_rate = the walking "

@@ -5,7 +5,10 @@
 // filaments, linkers, motors and branchers (medyan_filaments.cpp). Internal to io/.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <array>
+#include <cmath>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -14,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "io/medyan_import.hpp"
 #include "io/medyan_input.hpp"
 
@@ -126,10 +130,19 @@ class Translator {
     if (!e) return std::nullopt;
     return e->values.front();
   }
+  // A count (filaments, copies, heads) as written: a whole number a copy number can hold.
+  // 1e300 was written as -9223372036854775808, and 2.5 as 2.
+  static long long count(double v, const std::string& where, const std::string& key) {
+    if (!(v >= 0 && v <= 2e9 && v == std::floor(v)))
+      throw InputError(fmt::format("{}: {} must be a whole number from 0 to 2e9, got {:g}", where, key, v));
+    return static_cast<long long>(v);
+  }
+  // Where the entry find() reads is: the last non-empty one.
   std::string whereOf(const std::string& upper) {
+    std::string where;
     for (const Entry& e : system_)
-      if (e.upper == upper && !e.values.empty()) return e.where;
-    return "";
+      if (e.upper == upper && !e.values.empty()) where = e.where;
+    return where;
   }
   void done(const std::string& where, const std::string& what) { out_.translated.push_back(where + ": " + what); }
   void skip(const std::string& where, const std::string& what) { out_.untranslated.push_back(where + ": " + what); }

@@ -46,6 +46,21 @@ RemeshSettings remeshSettings(const MembraneConfig& c, const SurfaceMesh& mesh, 
   return r;
 }
 
+// A loaded mesh's coordinates are nanometres. Beyond a metre they keep too few digits for
+// a mesh of nanometres (generated shapes have the same bound), and edges under 0.1 nm are
+// most likely a file in µm or m (a 1 µm vesicle in µm has edges of ~0.05): both ran to
+// exit 0 with nonsense.
+void checkLoadedScale(const SurfaceMesh& mesh, const std::string& where) {
+  for (const Vec3& x : mesh.positions())
+    if (!(x.cwiseAbs().maxCoeff() <= 1e9))
+      throw InputError(fmt::format("{}: a vertex at ({:g}, {:g}, {:g}) nm lies beyond 1e9 nm (a metre) of the origin",
+                                   where, x[0], x[1], x[2]));
+  const double edge = meanEdgeLength(mesh);
+  if (!(edge >= 0.1))
+    throw InputError(fmt::format("{}: its mean edge is {:.3g} nm; coordinates are read in nm (is the file in µm?)",
+                                 where, edge));
+}
+
 void reverseOrientation(TriangleSoup& soup) {
   for (Tri& t : soup.triangles) std::swap(t[1], t[2]);
 }
@@ -58,6 +73,7 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
   TriangleSoup soup = restored ? restored->mesh : initialMesh(c);
   const std::string mesh_source = c.shape == "mesh" && !restored ? c.file.string() : where;
   SurfaceMesh mesh = SurfaceMesh::fromSoup(soup, mesh_source);
+  if (c.shape == "mesh" && !restored) checkLoadedScale(mesh, where + ", file " + c.file.string());
 
   std::vector<char> fixed;
   if (restored) {

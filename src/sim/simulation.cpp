@@ -289,6 +289,17 @@ void Simulation::checkCrossings(const char* when) const {
                                  system_.time(), when, crossing->describe(term->membrane())));
 }
 
+// A minimizer that met a non-finite energy knows only the total: name the terms that are
+// not finite where the bodies stand (a bending stiffness of 1e300 said only "energy is
+// inf ... check parameters for impossible values").
+std::string Simulation::nonFiniteTerms() {
+  std::string terms;
+  for (const TermEnergy& t : system_.forceField().breakdown(system_.coordinates()))
+    if (!std::isfinite(t.energy))
+      terms += fmt::format("{}\"{}\" of \"{}\" ({:g} pN·nm)", terms.empty() ? "" : ", ", t.name, t.owner, t.energy);
+  return terms.empty() ? "" : "; not finite where the bodies are: the energy term " + terms + ": check its parameters";
+}
+
 MinimizationResult Simulation::relax() {
   // Chemistry may have grown, bound or branched filaments since the last relaxation.
   if (system_.filaments()) system_.layOut();
@@ -302,7 +313,11 @@ MinimizationResult Simulation::relax() {
     const auto start = std::chrono::steady_clock::now();
     const double force_seconds = system_.forceField().forceSeconds();
     for (const auto& m : system_.membranes()) coverage.push_back(m->coatCoverage()), m->beginLipidFlow();
-    r = by_body ? relaxByBody() : relaxAll();
+    try {
+      r = by_body ? relaxByBody() : relaxAll();
+    } catch (const RunError& e) {
+      throw RunError(e.what() + nonFiniteTerms());
+    }
     c.force_seconds += system_.forceField().forceSeconds() - force_seconds;
     ++c.minimizations;
     c.minimizer_iterations += r.iterations;

@@ -40,6 +40,9 @@ class Simulation {
   double timeOfWindow(std::int64_t k) const;
 
  private:
+  // "; not finite where the bodies are: ..." naming the terms whose energy is not finite at
+  // the bodies' stored positions, or "" if none.
+  std::string nonFiniteTerms();
   MinimizationResult relax();
   // kAuto: membranes one by one (normal displacements, exact constraints, remeshing
   // within), then filaments, in rounds while they push on each other; the rest: all

@@ -154,7 +154,11 @@ using Points = std::vector<std::vector<std::optional<SweptValue>>>;
 
 Points gridPoints(SweepSpec& spec, const toml::table& grid, bool seeds_given, const SweepFileError& fail) {
   std::vector<std::vector<SweptValue>> axes;
+  std::set<std::string> keys;
   for (const Setting& s : settingsInOrder(grid)) {
+    // "membrane.0.x" = [...] beside [grid.membrane.0] x = [...] names one key twice; the
+    // later one was dropped without a word.
+    if (!keys.insert(s.key).second) fail(s.value, "grid." + s.key, "is given twice");
     const toml::array* list = s.value->as_array();
     if (!list || list->empty())
       fail(s.value, "grid." + s.key, "must be a non-empty list of values, e.g. [10.0, 20.0]");

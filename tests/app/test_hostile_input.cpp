@@ -9,8 +9,11 @@
 
 #include <chrono>
 #include <string>
+#include <tuple>
 
 #include "app/cli_helpers.hpp"
+#include "mesh/icosphere.hpp"
+#include "mesh/mesh_file.hpp"
 
 namespace cortex::cli_test {
 namespace {
@@ -193,6 +196,19 @@ TEST(HostileInput, SizesThatCannotBeBuiltAreRefusedNamingTheKey) {
                              "compartments.shape", "2.7e7 compartments");
   expectRefusedInCheckAndRun(dir, replaced(kSpecies, "end_time = 0.02", "end_time = 1.0e300"), "simulation.end_time",
                              "end_time 1e300 s");
+}
+
+// A loaded mesh is read in nm: one a metre away, or one written in µm (a 200 nm vesicle
+// as radius 0.2), ran to exit 0 with nonsense. Both are refused naming the file.
+TEST(HostileInput, LoadedMeshesOutOfScaleAreRefused) {
+  TempDir dir;
+  for (const auto& [name, center, radius] :
+       {std::tuple<std::string, double, double>{"far.obj", 1e10, 200.0}, {"micrometres.obj", 0.0, 0.2}}) {
+    writeObj(dir / name, icosphere(Vec3(center, 0, 0), radius, 3));
+    const std::string text = "[simulation]\nend_time = 0.0\n[[membrane]]\nname = \"m\"\nshape = \"mesh\"\nfile = \"" +
+                             (dir / name).string() + "\"\n";
+    expectRefusedInCheckAndRun(dir, text, name, "mesh " + name);
+  }
 }
 
 // A network that explodes within a window passes the load check at its start (little to

@@ -1,5 +1,5 @@
-// A run that fails midway (a diverging energy): exit code 1, a message saying what and
-// when, and the last good snapshot and checkpoint kept (README, exit codes).
+// A run that fails midway (a diverging or non-finite energy): exit code 1, a message saying
+// what and when, and the last good snapshot and checkpoint kept (README, exit codes).
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -112,6 +112,20 @@ TEST(RunFailure, UnboundedEnergyWithDefaultStepFails) {
   EXPECT_EQ(r.exit_code, 1) << "a run whose energy is unbounded below ended with exit code " << r.exit_code
                             << " (final area " << area << " nm^2, initial ~5e5 nm^2)\n"
                             << describe(r);
+}
+
+// An energy that is not finite where the bodies start (the bundle of
+// examples/bundle_protrusion.toml with an excluded-volume distance of 1e300 nm): the
+// minimizer knows only the total, and the message used to end at "check parameters for
+// impossible values". It names the term.
+TEST(RunFailure, ANonFiniteEnergyNamesItsTerm) {
+  TempDir dir;
+  const RunResult r = runConfig(sourceDir() / "examples" / "bundle_protrusion.toml", dir / "out",
+                                {"--set", "filament_type.0.excluded_volume_distance=1e300", "--set",
+                                 "simulation.end_time=0.01"},
+                                dir.path());
+  EXPECT_EQ(r.exit_code, 1) << describe(r);
+  EXPECT_NE(r.err.find("the energy term \"excluded_volume\" of \"filaments\""), std::string::npos) << describe(r);
 }
 
 }  // namespace

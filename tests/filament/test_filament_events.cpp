@@ -73,6 +73,17 @@ TEST(FilamentForceLaws, MotorHeadsSetUnbindingAndWalking) {
   // Without heads nothing changes.
   EXPECT_EQ(FilamentChemistry::catchFactor(m, 12.62, 0), FilamentChemistry::catchFactor(m, 12.62));
   EXPECT_EQ(FilamentChemistry::walkFactor(m, 45.0, 0), FilamentChemistry::walkFactor(m, 45.0));
+  // k_h → 0: each head's binding is the only way a bound head is replaced, so the
+  // unloaded ensemble unbinds as one head does (factor → 1, exactly computed below
+  // round-off, where (1 + x)^N − 1 gave 0/0), and the walking factor (N − N_b)/N_b, which
+  // grows as 1/k_h, stops at the 10⁶ cap (it was infinite: an internal error).
+  for (const double kh : {1e-6, 1e-12, 1e-300}) {
+    m.head_binding_rate = kh;
+    EXPECT_NEAR(FilamentChemistry::catchFactor(m, 0.0, n), 1.0, 1e-4) << kh;  // 1 − (N−1)x/2 + …, x = k_h/k_off
+    EXPECT_LE(FilamentChemistry::walkFactor(m, 0.0, n), 1e6) << kh;
+  }
+  m.head_binding_rate = 1e-300;
+  EXPECT_EQ(FilamentChemistry::walkFactor(m, 0.0, n), 1e6);
 }
 
 // A filament growing straight at another one's side feels the excluded-volume push on its

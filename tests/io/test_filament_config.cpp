@@ -206,6 +206,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadOverride{"filament_type.0.monomer_size=-1.0", "filament_type.0.monomer_size"},
         BadOverride{"filament_type.0.monomer_size=nan", "filament_type.0.monomer_size"},
         BadOverride{"filament_type.0.plus_on=inf", "filament_type.0.plus_on"},
+        // Past the default bound of 1e300 the message names that bound ("must be >= 0"
+        // stated the wrong problem).
+        BadOverride{"filament_type.0.plus_on=7.6e301", "filament_type.0.plus_on: must be in [0, 1e+300]"},
         BadOverride{"filament_type.0.cylinder_monomers=0", "filament_type.0.cylinder_monomers"},
         BadOverride{"filament_type.0.cylinder_monomers=2.5", "filament_type.0.cylinder_monomers"},
         BadOverride{"filament_type.0.bending_stiffness=-1.0", "filament_type.0.bending_stiffness"},

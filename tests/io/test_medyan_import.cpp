@@ -255,6 +255,12 @@ TEST(MedyanImport, InvalidInputNamesFileAndLine) {
   expectInputError(kGeometry, "SPECIESDIFFUSING: A 10 1e6 0 0 REG\nGENREACTION: A:DIFFUSING -> Q:DIFFUSING 1.0\n",
                    "chem.txt:2: GENREACTION: species 'Q' is not defined");
   expectInputError(kGeometry, "SPECIESDIFFUSING: A many 1e6 0 0 REG\n", "chem.txt:1: SPECIESDIFFUSING: COPYNUMBER");
+  // Counts too large for a copy number, or not whole: they were written as
+  // -9223372036854775808, or truncated (2.5 as 2), and the import exited 0.
+  expectInputError(kGeometry, "SPECIESDIFFUSING: A 1e300 1e6 0 0 REG\n",
+                   "chem.txt:1: SPECIESDIFFUSING COPYNUMBER must be a whole number from 0 to 2e9, got 1e+300");
+  expectInputError(std::string(kGeometry) + "NUMFILAMENTS: 30\nNUMFILAMENTS: 2.5\n", "",
+                   "system.txt:8: NUMFILAMENTS must be a whole number from 0 to 2e9, got 2.5");
   expectInputError(kGeometry,
                    "SPECIESDIFFUSING: A 10 1e6 0 0 REG\nSPECIESPLUSEND: P 0\n"
                    "POLYMERIZATIONREACTION: 0 A:DIFFUSING P:PLUSEND -> A:DIFFUSING 1\n",

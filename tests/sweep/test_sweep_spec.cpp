@@ -148,6 +148,8 @@ TEST(SweepSpec, BadSweepFilesNameFileLineKeyAndProblem) {
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = []\n", {":3:", "grid.a.x", "non-empty list"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = 1.0\n", {"grid.a.x", "non-empty list"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1.0, \"b\"]\n", {"grid.a.x", "mixes strings"});
+  // One key as a dotted key and in a table: the second was dropped without a word.
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1.0]\n[grid.a]\nx = [2.0]\n", {":5:", "grid.a.x", "given twice"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [{ b = 1 }]\n", {"grid.a.x", "an array of numbers"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[1.0, \"b\"]]\n", {"grid.a.x", "numbers only"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[]]\n", {"grid.a.x", "at least one number"});
