@@ -68,8 +68,8 @@ void DirectMethodEngine::advance(double t_end) {
   checkLoad(sum(), t_end - time_);
   double t = time_;
   for (std::int64_t n = 0;; ++n) {
-    if (n > 0 && n % kLoadCheckInterval == 0) checkLoad(sum(), t_end - t, n);
     const double total = sum();
+    if (n > 0 && n % kLoadCheckInterval == 0) checkLoad(total, t_end - t, n);
     if (!(total > 0.0)) break;
     t += rng_.exponential(total);
     if (t > t_end) break;  // memoryless: the overshooting waiting time is simply discarded

@@ -95,11 +95,11 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
                                       "radius or side ({:g} nm)", m.mesh_size, smallest));
     // Equilateral triangles of side h: about 2A/(√3 h²) vertices. Past the limit meshing
     // alone takes minutes and gigabytes (a mesh_size in the wrong unit, most likely).
-    const double vertices = 2.0 * shapeArea(m) / (std::sqrt(3.0) * m.mesh_size * m.mesh_size);
+    const double area = shapeArea(m), vertices = 2.0 * area / (std::sqrt(3.0) * m.mesh_size * m.mesh_size);
     if (vertices > kMaxGeneratedVertices)
       r.fail("mesh_size", fmt::format("({:g} nm) would mesh this shape (area {:.3g} nm²) with about {:.3g} vertices, "
                                       "over the limit of {:g}: is it in nm?",
-                                      m.mesh_size, shapeArea(m), vertices, kMaxGeneratedVertices));
+                                      m.mesh_size, area, vertices, kMaxGeneratedVertices));
   } else {
     // A loaded mesh keeps its own triangles; mesh_size only sets the remesher's target
     // on flat parts (default: the file's mean edge length).

@@ -1,6 +1,7 @@
 #include "sim/surface_species.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -208,13 +209,13 @@ void SurfaceSpeciesFeedback::update(System& system) {
           setSensingRows(c, membrane, cells.graph, curvature, system.time(), interaction);
         }
         // The external potential rides in the same field: name every block that fed it.
-        std::string blocks = c.curvature ? "curvature" : "";
-        if (c.interaction) blocks += std::string(blocks.empty() ? "" : ", ") + "interaction";
-        if (!c.interaction && !c.curvature) blocks = "cross_interaction";  // coupled to another species only
-        if (!potential[j].empty()) blocks += std::string(blocks.empty() ? "" : ", ") + "potential";
-        const std::size_t last = blocks.rfind(", ");
-        if (last != std::string::npos) blocks.replace(last, 2, " or ");
-        feed(j, blocks.c_str(), [&] { engine_.setSurfaceInteraction(s.species[j], std::move(interaction)); });
+        std::vector<std::string> blocks;
+        if (c.curvature) blocks.push_back("curvature");
+        if (c.interaction) blocks.push_back("interaction");
+        if (blocks.empty()) blocks.push_back("cross_interaction");  // coupled to another species only
+        if (!potential[j].empty()) blocks.push_back("potential");
+        const std::string fed_by = fmt::format("{}", fmt::join(blocks, " or "));
+        feed(j, fed_by.c_str(), [&] { engine_.setSurfaceInteraction(s.species[j], std::move(interaction)); });
         continue;
       }
       if (potential[j].empty()) continue;
