@@ -12,6 +12,7 @@
 #include "io/config_override.hpp"
 #include "io/config_reader.hpp"
 #include "io/filament_config.hpp"
+#include "io/resolvable_forces.hpp"
 #include "io/surface_species_config.hpp"
 
 namespace cortex {
@@ -181,8 +182,30 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
   return m;
 }
 
+// The largest absolute value a schedule takes.
+double largest(const Schedule& s) {
+  double v = 0.0;
+  for (const auto& point : s.points()) v = std::max(v, std::abs(point.second));
+  return v;
+}
+
+// Each modulus against the force tolerance at the mesh's scale h (io/resolvable_forces.hpp).
+// A loaded mesh without mesh_size has its scale only once it is read: not checked here.
+void requireResolvable(const ConfigReader& r, const MembraneMechanics& m, double h, double tolerance) {
+  if (!(h > 0)) return;
+  requireResolvableForces(r, "bending_modulus", largest(m.bending.modulus) / h, "bending_modulus / mesh_size",
+                          tolerance);
+  requireResolvableForces(r, "tension", largest(m.tension.tension) * h, "|tension| x mesh_size", tolerance);
+  // The penalties' forces scale with the strain they hold back: taken at 1%.
+  requireResolvableForces(r, "area_modulus", 0.01 * largest(m.area.modulus) * h, "area_modulus x mesh_size x 1%",
+                          tolerance);
+  requireResolvableForces(r, "volume_modulus", 0.01 * largest(m.volume.modulus) * h * h,
+                          "volume_modulus x mesh_size² x 1%", tolerance);
+}
+
 MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir,
-                            MinimizerKind minimizer) {
+                            const MinimizerSettings& mechanics) {
+  const MinimizerKind minimizer = mechanics.kind;
   MembraneConfig m;
   m.name = r.name("name", fmt::format("membrane{}", index));
   readShape(r, m, base_dir);
@@ -192,6 +215,7 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   for (const SurfaceSpeciesConfig& sp : m.species)
     if (sp.curvature && sp.curvature->spontaneous_curvature != 0.0) protein_curvature = sp.name;
   m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane", minimizer, protein_curvature);
+  requireResolvable(r, m.mechanics, m.mesh_size, mechanics.force_tolerance);
   m.remesh = r.boolean("remesh", false);
   // A loaded mesh has no mesh_size: its sizes default from its own mean edge (sim/).
   m.min_size = r.number("min_size", m.mesh_size / 4.0, Range::positive(), "nm");
@@ -258,13 +282,13 @@ Config parseConfig(const std::string& text, const std::string& source,
   if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
   const auto membranes = r.tableArray("membrane");
   for (std::size_t i = 0; i < membranes.size(); ++i) {
-    c.membranes.push_back(readMembrane(membranes[i], i, base_dir, c.mechanics.kind));
+    c.membranes.push_back(readMembrane(membranes[i], i, base_dir, c.mechanics));
     for (std::size_t j = 0; j < i; ++j)
       if (c.membranes[j].name == c.membranes[i].name)
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));
   }
   c.chemistry = readChemistry(r, c.membranes);
-  c.filaments = readFilaments(r, c.chemistry, c.membranes);
+  c.filaments = readFilaments(r, c.chemistry, c.membranes, c.mechanics.force_tolerance);
   c.membrane_filament = readMembraneFilament(r, c);
   if (c.membranes.empty() && !c.chemistry && !c.filaments)
     throw InputError(fmt::format("{}: no [[membrane]], [[species]] or [[filament_type]] given: nothing to simulate",

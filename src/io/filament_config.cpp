@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "io/membrane_reference.hpp"
+#include "io/resolvable_forces.hpp"
 
 namespace cortex {
 namespace {
@@ -41,7 +42,8 @@ Index typeIndex(const ConfigReader& r, const std::string& key, const std::vector
   r.fail(key, fmt::format("no [[filament_type]] is named \"{}\"", name));
 }
 
-FilamentType readType(const ConfigReader& r, bool single, const std::vector<SpeciesDef>& species) {
+FilamentType readType(const ConfigReader& r, bool single, const std::vector<SpeciesDef>& species,
+                      double force_tolerance) {
   FilamentType t;
   if (!single && !r.has("name")) r.fail("name", "is required when there are several [[filament_type]]");
   t.name = r.name("name", t.name);
@@ -65,6 +67,14 @@ FilamentType readType(const ConfigReader& r, bool single, const std::vector<Spec
   t.excluded_volume_distance =
       r.number("excluded_volume_distance", t.excluded_volume_distance, Range::positive(), "nm");
   t.nucleation_rate = r.number("nucleation_rate", t.nucleation_rate, Range::nonNegative(), "1/(µM·s)");
+  const double cylinder = t.monomer_size * t.cylinder_monomers;
+  requireResolvableForces(r, "bending_stiffness", t.bending_stiffness / cylinder,
+                          "bending_stiffness / cylinder length", force_tolerance);
+  requireResolvableForces(r, "stretching_stiffness", t.stretching_stiffness * cylinder,
+                          "stretching_stiffness x cylinder length", force_tolerance);
+  requireResolvableForces(r, r.has("excluded_volume_distance") ? "excluded_volume_distance" : "excluded_volume_stiffness",
+                          t.excluded_volume_stiffness * t.excluded_volume_distance,
+                          "excluded_volume_stiffness x excluded_volume_distance", force_tolerance);
   const bool exchanges = t.plus_on > 0 || t.plus_off > 0 || t.minus_on > 0 || t.minus_off > 0 || t.nucleation_rate > 0;
   if (exchanges && t.monomer_species_index < 0)
     r.fail("monomer_species", "is required (the [[species]] of free monomers) when an end rate or "
@@ -137,6 +147,12 @@ FilamentInit readInit(const ConfigReader& r, const std::vector<FilamentType>& ty
       f.direction = d.normalized();
     }
     f.spacing = r.number("spacing", f.spacing, Range::positive(), "nm");
+    // Closer than a filament's radius, each axis lies inside its neighbour (a spacing of
+    // 1e-300 laid coincident filaments, whose excluded volume has no direction to push).
+    if (t.excluded_volume_stiffness > 0 && f.count > 1 && f.spacing < t.excluded_volume_distance / 2)
+      r.fail("spacing", fmt::format("({:g} nm) is below the radius of \"{}\" filaments (excluded_volume_distance / 2 "
+                                    "= {:g} nm): each would lie inside its neighbour",
+                                    f.spacing, t.name, t.excluded_volume_distance / 2));
     f.mixed_polarity = r.choice("polarity", "parallel", {"parallel", "mixed"}) == "mixed";
   } else {
     for (const char* k : {"center", "direction", "spacing", "polarity"})
@@ -255,7 +271,7 @@ class ProteinNames {
 }  // namespace
 
 std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std::optional<ChemistryConfig>& chemistry,
-                                            const std::vector<MembraneConfig>& membranes) {
+                                            const std::vector<MembraneConfig>& membranes, double force_tolerance) {
   const auto type_tables = root.tableArray("filament_type");
   if (type_tables.empty()) {
     for (const char* k : {"filaments", "boundary", "linker", "motor", "brancher"})
@@ -269,7 +285,7 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
 
   FilamentConfig f;
   for (std::size_t i = 0; i < type_tables.size(); ++i) {
-    f.types.push_back(readType(type_tables[i], type_tables.size() == 1, species));
+    f.types.push_back(readType(type_tables[i], type_tables.size() == 1, species, force_tolerance));
     for (std::size_t j = 0; j < i; ++j)
       if (f.types[j].name == f.types[i].name)
         type_tables[i].fail("name", fmt::format("\"{}\" is used by filament_type.{} already", f.types[i].name, j));
