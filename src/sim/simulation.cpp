@@ -191,11 +191,18 @@ MinimizationResult Simulation::relaxMembranes() {
       r.stop_reason = fmt::format("membrane \"{}\": {} (largest normal force {:.3g} pN, tolerance {:.3g} pN)",
                                   m->name(), rep.stop_reason, rep.max_normal_force, rep.force_tolerance);
     }
+    // Converged, yet far: the minimizer's residual (normal displacements, its own
+    // multipliers) and the one recomputed at the final positions disagree, which a
+    // stiffness near the limit of double precision does (io/resolvable_forces.hpp).
+    const std::string why = rep.converged ? "it converged in its own coordinates, but not by the forces recomputed "
+                                            "at the final positions (forces too large for double precision to "
+                                            "resolve to the tolerance?)"
+                                          : rep.stop_reason;
     if (rep.max_normal_force > kFarFromTolerance * rep.force_tolerance)
       throw RunError(fmt::format("membrane \"{}\": the relaxation at t = {:.6g} s ended far from equilibrium "
                                  "(largest normal force {:.3g} pN, over {:g} x its force tolerance {:.3g} pN): {}",
                                  m->name(), system_.time(), rep.max_normal_force, kFarFromTolerance,
-                                 rep.force_tolerance, rep.stop_reason));
+                                 rep.force_tolerance, why));
   }
   if (remeshed) system_.layOut();
   return r;

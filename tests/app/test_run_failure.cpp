@@ -139,5 +139,32 @@ TEST(RunFailure, ANonFiniteEnergyNamesItsTerm) {
   }
 }
 
+// A bending modulus of 1e9 pN·nm (1.7e7 pN at 60 nm edges, past what the config reader
+// accepts) converges in the shape relaxation's own coordinates and leaves ~58 pN at the
+// final positions. The error said "...tolerance 0.1 pN): " and nothing after: it says why.
+TEST(RunFailure, ARelaxationConvergedOnlyInItsOwnCoordinatesSaysSo) {
+  Config config = parseConfig(R"([simulation]
+end_time = 0.01
+chemistry_window = 0.01
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+radius = 800.0
+mesh_size = 60.0
+)",
+                              "stiff.toml", ".", {});
+  config.membranes[0].mechanics.bending.modulus = Schedule(1e9);
+  System system(config);
+  RunObserver quiet;
+  Simulation sim(system, config.simulation, config.mechanics, quiet);
+  try {
+    sim.run(true);
+    ADD_FAILURE() << "the run did not fail";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("not by the forces recomputed at the final positions"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace cortex::cli_test
