@@ -234,6 +234,19 @@ TEST(HostileInput, BundlesOfFilamentsInsideOneAnotherAreRefused) {
   EXPECT_EQ(runCortex({"check", close.string()}, dir.path()).exit_code, 0);
 }
 
+// 10,000 filaments of 2 µm in 1 µm³ (77% of it filled by their bodies) ran `check` past
+// 2 minutes and 2 GB: the linker and motor pairs in reach grow as the density squared.
+// Over half the volume filled is refused naming the count; 7% is accepted.
+TEST(HostileInput, FilamentsThatCannotFitWhereTheyStartAreRefused) {
+  TempDir dir;
+  const std::string filaments =
+      std::string(kSpecies) + "[[filament_type]]\nname = \"actin\"\n[[filaments]]\nlength = 150.0\n";
+  expectRefusedInCheckAndRun(dir, filaments + "count = 1500\n", "filaments.0.count",
+                             "1500 filaments of 150 nm in 200³ nm³ (108% filled)");
+  const fs::path sparse = writeConfig(dir.path(), filaments + "count = 100\n", "sparse.toml");
+  EXPECT_EQ(runCortex({"check", sparse.string()}, dir.path()).exit_code, 0);
+}
+
 // A loaded mesh is read in nm: one a metre away, or one written in µm (a 200 nm vesicle
 // as radius 0.2), ran to exit 0 with nonsense. Both are refused naming the file.
 TEST(HostileInput, LoadedMeshesOutOfScaleAreRefused) {
