@@ -67,8 +67,8 @@ constexpr double kMaxGeneratedVertices = 5e6;
 void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::path& base_dir) {
   m.shape = r.choice("shape", "sphere", {"sphere", "ellipsoid", "plane", "mesh"});
   const bool generated = m.shape != "mesh";
-  // Coordinates beyond a metre (1e9 nm) keep too few digits for a mesh of nanometres.
-  const Range coordinate{-1e9, 1e9}, extent{0.0, 1e9, true, false};
+  const double far = constants::kMaxCoordinate;
+  const Range coordinate{-far, far}, extent{0.0, far, true, false};
   if (m.shape != "mesh") {
     const auto c = r.has("center") ? r.numbers("center", 3, coordinate, "nm") : std::vector<double>{0, 0, 0};
     m.center = Vec3(c[0], c[1], c[2]);

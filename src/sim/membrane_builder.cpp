@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/implicit_shapes.hpp"
@@ -46,15 +47,15 @@ RemeshSettings remeshSettings(const MembraneConfig& c, const SurfaceMesh& mesh, 
   return r;
 }
 
-// A loaded mesh's coordinates are nanometres. Beyond a metre they keep too few digits for
-// a mesh of nanometres (generated shapes have the same bound), and edges under 0.1 nm are
+// A loaded mesh's coordinates are nanometres, bounded like generated shapes' (beyond a
+// metre they keep too few digits for a mesh of nanometres), and edges under 0.1 nm are
 // most likely a file in µm or m (a 1 µm vesicle in µm has edges of ~0.05): both ran to
 // exit 0 with nonsense.
 void checkLoadedScale(const SurfaceMesh& mesh, const std::string& where) {
   for (const Vec3& x : mesh.positions())
-    if (!(x.cwiseAbs().maxCoeff() <= 1e9))
-      throw InputError(fmt::format("{}: a vertex at ({:g}, {:g}, {:g}) nm lies beyond 1e9 nm (a metre) of the origin",
-                                   where, x[0], x[1], x[2]));
+    if (!(x.cwiseAbs().maxCoeff() <= constants::kMaxCoordinate))
+      throw InputError(fmt::format("{}: a vertex at ({:g}, {:g}, {:g}) nm lies beyond {:g} nm (a metre) of the origin",
+                                   where, x[0], x[1], x[2], constants::kMaxCoordinate));
   const double edge = meanEdgeLength(mesh);
   if (!(edge >= 0.1))
     throw InputError(fmt::format("{}: its mean edge is {:.3g} nm; coordinates are read in nm (is the file in µm?)",
