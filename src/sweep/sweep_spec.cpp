@@ -100,6 +100,9 @@ SweptValue sweptValue(const toml::node& node, const std::string& key, const Swee
   return v;
 }
 
+// What makes two swept values the same value (1 and 1.0 are one).
+std::string identity(const SweptValue& v) { return v.number ? fmt::format("{}", *v.number) : v.text; }
+
 // Validates a key path as `--set` reads it: dot-separated, no empty part.
 void checkKeyPath(const Setting& s, const SweepFileError& fail) {
   if (s.key.empty() || s.key.front() == '.' || s.key.back() == '.' || s.key.find("..") != std::string::npos)
@@ -163,7 +166,14 @@ Points gridPoints(SweepSpec& spec, const toml::table& grid, bool seeds_given, co
     if (!list || list->empty())
       fail(s.value, "grid." + s.key, "must be a non-empty list of values, e.g. [10.0, 20.0]");
     std::vector<SweptValue> axis;
-    for (const toml::node& item : *list) axis.push_back(sweptValue(item, "grid." + s.key, fail));
+    std::set<std::string> seen;  // by value: 1 and 1.0 are one value
+    for (const toml::node& item : *list) {
+      axis.push_back(sweptValue(item, "grid." + s.key, fail));
+      const SweptValue& v = axis.back();
+      if (!seen.insert(identity(v)).second)
+        fail(&item, "grid." + s.key,
+             fmt::format("lists {} twice: the members would be the same run (replicates are `seeds`)", v.toml));
+    }
     const bool is_string = !axis.front().number;
     for (const SweptValue& v : axis)
       if (!v.number != is_string) fail(s.value, "grid." + s.key, "mixes strings with numbers or booleans");
@@ -203,9 +213,15 @@ Points listedPoints(SweepSpec& spec, const toml::array& list, bool seeds_given, 
   }
   // Keys are all known only now: a member leaving a key out gets an empty value.
   Points points;
-  for (auto& entry : entries) {
+  std::set<std::string> seen;
+  for (std::size_t m = 0; m < entries.size(); ++m) {
     points.emplace_back(spec.keys.size());
-    for (auto& [k, v] : entry) points.back()[k] = std::move(v);
+    for (auto& [k, v] : entries[m]) points.back()[k] = std::move(v);
+    std::string same;
+    for (const auto& v : points.back()) same += (v ? identity(*v) : "\x01absent") + '\x02';
+    if (!seen.insert(same).second)
+      fail(&list[m], fmt::format("members.{}", m),
+           "sets what an earlier member sets: the two would be the same run (replicates are `seeds`)");
   }
   return points;
 }

@@ -150,6 +150,14 @@ TEST(SweepSpec, BadSweepFilesNameFileLineKeyAndProblem) {
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1.0, \"b\"]\n", {"grid.a.x", "mixes strings"});
   // One key as a dotted key and in a table: the second was dropped without a word.
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1.0]\n[grid.a]\nx = [2.0]\n", {":5:", "grid.a.x", "given twice"});
+  // A value listed twice made identical members (1001 copies of one run were checked
+  // for 100 s); 1 and 1.0 are one value.
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [0.9, 0.8, 0.9]\n", {":3:", "grid.a.x", "lists 0.9 twice"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [1, 1.0]\n", {"grid.a.x", "lists 1.0 twice"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [\"u\", \"u\"]\n", {"grid.a.x", "twice"});
+  expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[1.0, 0.0], [1.0, 0.0]]\n", {"grid.a.x", "twice"});
+  expect("base = \"r.toml\"\n[[members]]\n\"a\" = 1\n[[members]]\n\"b\" = 2\n[[members]]\n\"a\" = 1.0\n",
+         {"members.2", "same run"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [{ b = 1 }]\n", {"grid.a.x", "an array of numbers"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[1.0, \"b\"]]\n", {"grid.a.x", "numbers only"});
   expect("base = \"r.toml\"\n[grid]\n\"a.x\" = [[]]\n", {"grid.a.x", "at least one number"});
