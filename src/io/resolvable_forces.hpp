@@ -5,7 +5,9 @@
 // tolerance 0.1 pN): bending_modulus 1e8 pN·nm (κ/h ≈ 1.7e6 pN) relaxes; 1e9 "converges"
 // in the relaxation's own coordinates and leaves 58 pN at the final positions, 1e300
 // spent 30 s before failing. Such a value is a unit slip, not a physical membrane or
-// filament (100 pN·nm ≈ 24 k_BT is typical), so the config is refused up front.
+// filament (100 pN·nm ≈ 24 k_BT is typical), so the config is refused up front. The
+// callers choose the scale: the membrane's bending at a curvature of 1/h (where the
+// failures above were measured), strain-held terms at 1% strain.
 #pragma once
 
 #include <string>

@@ -220,6 +220,10 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
       writeConfig(dir.path(), replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\nbending_modulus = 1e5"));
   const RunResult run = runConfig(stiff, dir / "stiff", {}, dir.path());
   EXPECT_EQ(run.exit_code, 0) << describe(run);
+  // Actin (100 pN/nm over 108 nm cylinders) relaxed to 1e-4 pN converges: accepted.
+  const fs::path tight = writeConfig(dir.path(), "[mechanics]\nforce_tolerance = 1e-4\n" + filaments, "tight.toml");
+  const RunResult check = runCortex({"check", tight.string()}, dir.path());
+  EXPECT_EQ(check.exit_code, 0) << describe(check);
 }
 
 // A bundle spacing of 1e-300 nm laid coincident filaments, which their excluded volume
