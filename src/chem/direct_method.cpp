@@ -96,7 +96,7 @@ void DirectMethodEngine::fire(std::size_t channel) {
     for (const SpeciesChange& change : net_.changes[r]) {
       const Index at = change.held ? holder_[i] : i;
       int& n = copies_[static_cast<std::size_t>(at) * S_ + change.species];
-      checkGrowth(n, change.delta, at, change.species);
+      checkGrowth(n, change.delta, at, change.species, r);
       n += change.delta;
       touch(at, change.species);
     }

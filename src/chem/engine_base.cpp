@@ -230,9 +230,13 @@ void EngineBase::checkCopies(Index subvolume, Index species, int n) const {
                                 " (another region, or no volume on its side of its membrane)");
 }
 
-void EngineBase::growthOverflow(Index subvolume, Index species) const {
-  throw RunError("chemistry: copies of species " + std::to_string(species) + " in subvolume " +
-                 std::to_string(subvolume) + " would exceed 2^31 - 1 (a reaction network growing without bound?)");
+void EngineBase::growthOverflow(Index subvolume, Index species, Index reaction) const {
+  const std::string where = region_of_[subvolume] == 0 ? fmt::format("compartment {}", subvolume)
+                                                        : fmt::format("surface subvolume {}", subvolume);
+  throw RunError(fmt::format("chemistry: reaction \"{}\" would take the copies of \"{}\" in {} past 2^31 - 1, "
+                             "the most a copy number holds (a reaction network growing without bound, or a "
+                             "stoichiometry too large?)",
+                             equations_[reaction], species_[species].name, where));
 }
 
 void EngineBase::checkRateFactor(Index reaction, Index subvolume, double factor) const {

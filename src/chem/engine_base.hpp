@@ -49,10 +49,11 @@ class EngineBase : public ChemistryEngine {
   void checkRateFactor(Index reaction, Index subvolume, double factor) const;
   // Copy numbers are 32-bit: a reaction that would push one past 2^31 - 1 stops the run
   // (RunError) instead of wrapping around.
-  void checkGrowth(int n, int delta, Index subvolume, Index species) const {
-    if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(subvolume, species);
+  // Reaction `reaction` adding `delta` copies of `species` to the n in `subvolume`.
+  void checkGrowth(int n, int delta, Index subvolume, Index species, Index reaction) const {
+    if (delta > 0 && n > std::numeric_limits<int>::max() - delta) growthOverflow(subvolume, species, reaction);
   }
-  [[noreturn]] void growthOverflow(Index subvolume, Index species) const;
+  [[noreturn]] void growthOverflow(Index subvolume, Index species, Index reaction) const;
   // Refuses the rest of an advance, `dt` at total propensity `total` (events/s) after
   // `drawn` events of it (void ones included: they cost the same), when the whole is
   // expected to exceed the event limit (RunError naming the largest channel). Checked at

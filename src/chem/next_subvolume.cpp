@@ -253,7 +253,7 @@ bool NextSubvolumeEngine::changeLocally(Index i, Index r) {
   bool cascades = false;
   for (const SpeciesChange& change : net_.changes[r]) {
     if (change.held) continue;
-    checkGrowth(n[change.species], change.delta, i, change.species);
+    checkGrowth(n[change.species], change.delta, i, change.species, r);
     n[change.species] += change.delta;
     sub_[i].diffusion += change.delta * hopOutOf(i, change.species);
     cascades = cascades || !net_.heldReaders[change.species].empty();
@@ -265,7 +265,7 @@ bool NextSubvolumeEngine::changeLocally(Index i, Index r) {
 void NextSubvolumeEngine::changeHeld(Index h, Index r) {
   for (const SpeciesChange& change : net_.changes[r]) {
     if (!change.held) continue;
-    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species);
+    checkGrowth(copies_[static_cast<std::size_t>(h) * S_ + change.species], change.delta, h, change.species, r);
     changeSubvolume(h, [&] { changeCopies(h, change.species, change.delta); });
   }
 }

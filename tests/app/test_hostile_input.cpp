@@ -291,6 +291,23 @@ TEST(HostileInput, ChemistryExplodingWithinAWindowStops) {
   }
 }
 
+// A stoichiometry of 999,999 overflows a copy number within a window: exit 1 naming the
+// reaction and the species (it said "copies of species 1 in subvolume 0"), with either engine.
+TEST(HostileInput, CopyNumbersPastTheirLimitNameTheReaction) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(),
+                                      std::string(kSpecies) + "[[species]]\nname = \"B\"\n[[reaction]]\n"
+                                                              "equation = \"A -> A + 999999 B\"\nrate = 1.0e5\n",
+                                      "overflow.toml");
+  for (const std::string engine : {"nsm", "direct"}) {
+    const RunResult run =
+        runConfig(config, dir / "out", {"--overwrite", "--set", "chemistry.engine=\"" + engine + "\""}, dir.path());
+    EXPECT_EQ(run.exit_code, 1) << engine << "\n" << describe(run);
+    EXPECT_NE(run.err.find("reaction \"A -> A + 999999 B\" would take the copies of \"B\""), std::string::npos)
+        << engine << "\n" << describe(run);
+  }
+}
+
 // A run that fails before its first checkpoint does not claim to keep one.
 // A filament type without a monomer species reacts with nothing; beside [[species]] its
 // empty reaction range sat where the config's empty one did, and the engine took one
