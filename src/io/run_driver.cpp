@@ -241,6 +241,11 @@ RunOutcome runSimulation(const RunRequest& request) {
     outcome = simulation.run(!resume);
   } catch (const RunError& e) {
     progress.finish();
+    try {
+      writer.flush();  // the index lists every snapshot written
+    } catch (const RunError& io) {
+      spdlog::warn("the trajectory index could not be brought up to date: {}", io.what());
+    }
     const double kept = observer.lastCheckpointTime();
     const std::string status =
         kept >= 0 ? fmt::format("the snapshots so far and the checkpoint of t = {:.6g} s are kept; fix the cause and "
@@ -253,6 +258,7 @@ RunOutcome runSimulation(const RunRequest& request) {
     throw RunError(fmt::format("{} ({})", e.what(), status));
   }
   progress.finish();
+  writer.flush();
   if (outcome == RunOutcome::kStopped) {
     spdlog::warn("stopped by signal {} at t = {:.6g} s ({} window{} completed) after writing a checkpoint; continue "
                  "with cortex run --resume {}",

@@ -272,12 +272,22 @@ void TrajectoryWriter::write(const Frame& frame) {
   snapshots_.push_back(std::move(snapshot));
   rows_.push_back(frame.observables);
   ++next_index_;
-  writeIndex();
+  constexpr std::size_t kAlwaysIndexed = 100;
+  constexpr double kIndexShare = 0.05;  // of the wall time, at most
+  if (snapshots_.size() <= kAlwaysIndexed ||
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - index_written_).count() * kIndexShare >=
+          index_seconds_)
+    writeIndex();
+}
+
+void TrajectoryWriter::flush() {
+  if (indexed_ != snapshots_.size()) writeIndex();
 }
 
 // The index first, then the XDMF: each is whole or absent, and both list only snapshot
 // files that are whole.
-void TrajectoryWriter::writeIndex() const {
+void TrajectoryWriter::writeIndex() {
+  const auto start = std::chrono::steady_clock::now();
   std::string bytes, csv;
   {
     h5::File index = h5::File::createInMemory(outdir_ / kIndexName);
@@ -309,6 +319,9 @@ void TrajectoryWriter::writeIndex() const {
   writeFileAtomically(outdir_ / kIndexName, bytes);
   writeFileAtomically(outdir_ / "observables.csv", csv);
   writeFileAtomically(outdir_ / "trajectory.xdmf", trajectoryXdmf(snapshots_));
+  indexed_ = snapshots_.size();
+  index_written_ = std::chrono::steady_clock::now();
+  index_seconds_ = std::chrono::duration<double>(index_written_ - start).count();
 }
 
 // Corner (i, j, k) of the grid at (i, j, k) times the compartment size, in C order (k
