@@ -254,6 +254,20 @@ std::optional<MembraneBeadExclusionParams> readMembraneFilament(const ConfigRead
   p.cutoff = r->number("cutoff", p.cutoff, Range::positive(), "nm");
   const std::string beads = r->choice("beads", "all", {"all", "ends", "plus_ends"});
   p.beads = beads == "all" ? ExclusionBeads::kAll : beads == "ends" ? ExclusionBeads::kEnds : ExclusionBeads::kPlusEnds;
+  // A contact term: a bead feels the membrane near it as a wall. With a cut-off past a
+  // membrane's radius it felt the far side too, and with a stiffness of 1e12 such a run
+  // never finished its first relaxation.
+  for (const MembraneConfig& m : c.membranes) {
+    const double size = m.shape == "plane" ? std::min(m.size[0], m.size[1]) / 2 : m.radii.minCoeff();
+    if (m.shape != "mesh" && p.cutoff > size)
+      r->fail("cutoff", fmt::format("({:g} nm) exceeds the {} of membrane \"{}\" ({:g} nm): a bead would feel its far "
+                                    "side; the interaction is a contact (default 20 nm)",
+                                    p.cutoff, m.shape == "plane" ? "half-width" : "smallest radius", m.name, size));
+  }
+  // The push on a bead where the fade begins, cutoff/2 from a flat membrane: 2πk/(cutoff/2)³.
+  requireResolvableForces(*r, r->has("stiffness") ? "stiffness" : "cutoff",
+                          2 * constants::kPi * p.stiffness / std::pow(p.cutoff / 2, 3),
+                          "2π stiffness / (cutoff/2)³", c.mechanics.force_tolerance);
   r->finish();
   if (!enabled) return std::nullopt;
   return p;

@@ -216,6 +216,13 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
   expectRefusedInCheckAndRun(dir, filaments + "excluded_volume_distance = 1e300\n",
                              "filament_type.0.excluded_volume_distance", "excluded volume distance 1e300");
 
+  const std::string coupled = std::string(kVesicle) + "[[filament_type]]\nname = \"actin\"\n[membrane_filament]\n";
+  expectRefusedInCheckAndRun(dir, coupled + "stiffness = 1e12\n", "membrane_filament.stiffness",
+                             "membrane-bead stiffness 1e12 pN nm³");
+  // A cut-off past the vesicle's radius made every bead feel its far side; with a
+  // stiffness of 1e12 that run never finished its first relaxation.
+  expectRefusedInCheckAndRun(dir, coupled + "cutoff = 500.0\n", "membrane_filament.cutoff", "cutoff 500 nm, radius 200");
+
   const fs::path stiff =
       writeConfig(dir.path(), replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\nbending_modulus = 1e5"));
   const RunResult run = runConfig(stiff, dir / "stiff", {}, dir.path());
