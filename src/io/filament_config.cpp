@@ -86,7 +86,7 @@ FilamentType readType(const ConfigReader& r, bool single, const std::vector<Spec
   return t;
 }
 
-BoundaryConfig readBoundary(const ConfigReader& r, const Vec3& grid_max) {
+BoundaryConfig readBoundary(const ConfigReader& r, const Vec3& grid_max, double force_tolerance) {
   BoundaryConfig b;
   if (r.choice("shape", "box", {"box", "sphere"}) == "sphere") {
     b.shape = Shape::kSphere;
@@ -105,6 +105,7 @@ BoundaryConfig readBoundary(const ConfigReader& r, const Vec3& grid_max) {
                          b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()));
   }
   b.repulsion = r.number("repulsion", b.repulsion, Range::nonNegative(), "pN");
+  requireResolvableForces(r, "repulsion", b.repulsion, "repulsion", force_tolerance);
   b.screening_length = r.number("screening_length", b.screening_length, Range::positive(), "nm");
   r.finish();
   return b;
@@ -208,7 +209,7 @@ void readIdentity(const ConfigReader& r, Protein& p, const std::vector<SpeciesDe
 
 // Binding between two filaments, shared by linkers and motors.
 template <class Protein>
-void readBinding(const ConfigReader& r, Protein& p) {
+void readBinding(const ConfigReader& r, Protein& p, double force_tolerance) {
   p.min_distance = r.number("min_distance", p.min_distance, Range::nonNegative(), "nm");
   p.max_distance = r.number("max_distance", p.max_distance, Range::positive(), "nm");
   if (!(p.min_distance < p.max_distance))
@@ -217,28 +218,31 @@ void readBinding(const ConfigReader& r, Protein& p) {
   p.on_rate = r.number("on_rate", p.on_rate, Range::nonNegative(), "1/(µM·s)");
   p.off_rate = r.number("off_rate", p.off_rate, Range::nonNegative(), "1/s");
   p.stiffness = r.number("stiffness", p.stiffness, Range::positive(), "pN/nm");
+  requireResolvableForces(r, "stiffness", 0.01 * p.stiffness * p.max_distance, "stiffness x max_distance x 1%",
+                          force_tolerance);
 }
 
 int readSiteSpacing(const ConfigReader& r, int fallback) {
   return static_cast<int>(r.integer("site_spacing", fallback, 1, 1'000'000));
 }
 
-LinkerType readLinker(const ConfigReader& r, const std::vector<SpeciesDef>& species) {
+LinkerType readLinker(const ConfigReader& r, const std::vector<SpeciesDef>& species, double force_tolerance) {
   LinkerType l;
   readIdentity(r, l, species);
-  readBinding(r, l);
+  readBinding(r, l, force_tolerance);
   l.slip_length = r.number("slip_length", l.slip_length, Range::nonNegative(), "nm");
   l.site_spacing = readSiteSpacing(r, l.site_spacing);
   r.finish();
   return l;
 }
 
-MotorType readMotor(const ConfigReader& r, const std::vector<SpeciesDef>& species) {
+MotorType readMotor(const ConfigReader& r, const std::vector<SpeciesDef>& species, double force_tolerance) {
   MotorType m;
   readIdentity(r, m, species);
-  readBinding(r, m);
+  readBinding(r, m, force_tolerance);
   m.walk_rate = r.number("walk_rate", m.walk_rate, Range::nonNegative(), "1/s");
-  m.step_size = r.number("step_size", m.step_size, Range::positive(), "nm");
+  // Rounded to whole monomers: 1e300 nm overflowed that count and walked like 2.7 nm.
+  m.step_size = r.number("step_size", m.step_size, Range{0.0, 1e4, true, false}, "nm");
   m.stall_force = r.number("stall_force", m.stall_force, Range::positive(), "pN");
   m.hill_alpha = r.number("hill_alpha", m.hill_alpha, Range::positive(), "");
   m.catch_force = r.number("catch_force", m.catch_force, Range::positive(), "pN");
@@ -258,7 +262,7 @@ MotorType readMotor(const ConfigReader& r, const std::vector<SpeciesDef>& specie
 }
 
 BrancherType readBrancher(const ConfigReader& r, const std::vector<FilamentType>& types,
-                          const std::vector<SpeciesDef>& species) {
+                          const std::vector<SpeciesDef>& species, double force_tolerance) {
   BrancherType b;
   readIdentity(r, b, species);
   b.filament_type_index = typeIndex(r, "filament_type", types, b.filament_type);
@@ -270,6 +274,12 @@ BrancherType readBrancher(const ConfigReader& r, const std::vector<FilamentType>
   b.angle = r.number("angle", b.angle, Range{0.0, 180.0, true, true}, "degrees");
   b.angle_stiffness = r.number("angle_stiffness", b.angle_stiffness, Range::nonNegative(), "pN·nm");
   b.position_stiffness = r.number("position_stiffness", b.position_stiffness, Range::positive(), "pN/nm");
+  const FilamentType& t = types[b.filament_type_index];
+  const double cylinder = t.monomer_size * t.cylinder_monomers;
+  requireResolvableForces(r, "angle_stiffness", 0.01 * b.angle_stiffness / cylinder,
+                          "angle_stiffness / cylinder length x 1%", force_tolerance);
+  requireResolvableForces(r, "position_stiffness", 0.01 * b.position_stiffness * cylinder,
+                          "position_stiffness x cylinder length x 1%", force_tolerance);
   b.site_spacing = readSiteSpacing(r, b.site_spacing);
   r.finish();
   return b;
@@ -320,7 +330,7 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
         type_tables[i].fail("name", fmt::format("\"{}\" is used by filament_type.{} already", f.types[i].name, j));
   }
   if (const auto b = root.table("boundary")) {
-    f.boundary = readBoundary(*b, grid_max);
+    f.boundary = readBoundary(*b, grid_max, force_tolerance);
     // Ends outside the grid would draw monomers from the nearest compartment: refuse.
     const Vec3 lo = f.boundary->shape == BoundaryConfig::Shape::kSphere
                         ? Vec3(f.boundary->center.array() - f.boundary->radius)
@@ -340,17 +350,17 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
   ProteinNames names(f.types);
   const auto linkers = root.tableArray("linker");
   for (std::size_t i = 0; i < linkers.size(); ++i) {
-    f.linkers.push_back(readLinker(linkers[i], species));
+    f.linkers.push_back(readLinker(linkers[i], species, force_tolerance));
     names.add(linkers[i], fmt::format("linker.{}", i), f.linkers.back().name, f.linkers.back().species);
   }
   const auto motors = root.tableArray("motor");
   for (std::size_t i = 0; i < motors.size(); ++i) {
-    f.motors.push_back(readMotor(motors[i], species));
+    f.motors.push_back(readMotor(motors[i], species, force_tolerance));
     names.add(motors[i], fmt::format("motor.{}", i), f.motors.back().name, f.motors.back().species);
   }
   const auto branchers = root.tableArray("brancher");
   for (std::size_t i = 0; i < branchers.size(); ++i) {
-    f.branchers.push_back(readBrancher(branchers[i], f.types, species));
+    f.branchers.push_back(readBrancher(branchers[i], f.types, species, force_tolerance));
     names.add(branchers[i], fmt::format("brancher.{}", i), f.branchers.back().name, f.branchers.back().species);
   }
   return f;

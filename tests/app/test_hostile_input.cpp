@@ -215,6 +215,13 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
                              "filament bending 1e300");
   expectRefusedInCheckAndRun(dir, filaments + "excluded_volume_distance = 1e300\n",
                              "filament_type.0.excluded_volume_distance", "excluded volume distance 1e300");
+  // A motor's stiffness or a boundary's repulsion of 1e300 failed with "largest force inf".
+  const std::string motor = filaments + "[[motor]]\nspecies = \"A\"\n";
+  expectRefusedInCheckAndRun(dir, motor + "stiffness = 1e300\n", "motor.0.stiffness", "motor stiffness 1e300");
+  expectRefusedInCheckAndRun(dir, filaments + "[boundary]\nrepulsion = 1e300\n", "boundary.repulsion",
+                             "boundary repulsion 1e300");
+  // Rounded to whole monomers, a step of 1e300 nm overflowed and walked like 2.7 nm.
+  expectRefusedInCheckAndRun(dir, motor + "step_size = 1e300\n", "motor.0.step_size", "motor step 1e300 nm");
 
   const std::string coupled = std::string(kVesicle) + "[[filament_type]]\nname = \"actin\"\n[membrane_filament]\n";
   expectRefusedInCheckAndRun(dir, coupled + "stiffness = 1e12\n", "membrane_filament.stiffness",
