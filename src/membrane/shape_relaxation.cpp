@@ -195,6 +195,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       u.setZero();
       memory.clear();
     }
+    if (last.stop_reason == kInfeasibleStart) rep.targets_unreachable = true;
     const bool at_targets = continuation >= 1.0;
     continuation = std::min(1.0, 4.0 * continuation);
     rep.iterations += last.iterations;

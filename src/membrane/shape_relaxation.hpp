@@ -106,6 +106,9 @@ struct ShapeRelaxationReport {
   // membrane whose tangential forces vanish; a coat on the vertices makes them finite.
   double held_force = 0.0, held_torque = 0.0;
   bool area_held = false, volume_held = false;   // which constraints were exact
+  // The held area and volume could not be reached together, even approached in steps
+  // (a reduced volume above what the mesh can enclose at its area).
+  bool targets_unreachable = false;
   double area_error = 0.0, volume_error = 0.0;  // relative to the targets (held ones only)
   Index vertices = 0;
 };

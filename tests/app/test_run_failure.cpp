@@ -166,5 +166,24 @@ mesh_size = 60.0
   }
 }
 
+// A reduced volume of 0.999 is more than a 368-vertex sphere encloses at its area (0.9972):
+// every relaxation failed its constraints and the run went on to exit 0 with warnings.
+TEST(RunFailure, AReducedVolumeTheMeshCannotReachStopsTheRun) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), R"([simulation]
+end_time = 0.02
+chemistry_window = 0.005
+[[membrane]]
+name = "vesicle"
+shape = "sphere"
+radius = 300.0
+mesh_size = 60.0
+reduced_volume = 0.999
+)");
+  const RunResult r = runConfig(config, dir / "out", {}, dir.path());
+  EXPECT_EQ(r.exit_code, 1) << describe(r);
+  EXPECT_NE(r.err.find("area and volume targets cannot be held together"), std::string::npos) << describe(r);
+}
+
 }  // namespace
 }  // namespace cortex::cli_test
