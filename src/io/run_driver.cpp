@@ -48,6 +48,18 @@ const char* const kRunFiles[] = {"summary.json",      "checkpoint.h5",     "traj
                                  "checkpoint.h5.tmp", "trajectory.h5.tmp", "trajectory.xdmf.tmp",
                                  "observables.csv.tmp", "compartments.h5",   "compartments.h5.tmp"};
 
+// An entry of kRunFiles that cortex cannot have written: a folder where it writes a file,
+// a file where it keeps its snapshot folder, or a device or socket.
+void refuseForeignEntry(const std::filesystem::path& outdir, const std::string& name) {
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(outdir / name, ec);
+  if (!std::filesystem::exists(status)) return;
+  const bool folder = name == "snapshots";
+  if (folder ? std::filesystem::is_directory(status) : std::filesystem::is_regular_file(status)) return;
+  throw InputError(fmt::format("{}: '{}' is not the {} cortex writes there; move it away", outdir.string(), name,
+                               folder ? "folder" : "file"));
+}
+
 void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
   std::error_code ec;
   const auto status = std::filesystem::status(outdir, ec);
@@ -65,8 +77,13 @@ void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
     throw InputError(fmt::format("{}: holds the results of an earlier run ({}): give another -o, continue it with "
                                  "--resume {}, or replace them with --overwrite",
                                  outdir.string(), fmt::join(found, ", "), outdir.string()));
+  // Only what cortex writes goes: a folder named like one of its files (remove_all
+  // deleted a folder called cortex.log with everything in it) is refused, and the
+  // snapshot folder keeps whatever is not a snapshot (TrajectoryWriter clears those).
+  for (const std::string& name : found) refuseForeignEntry(outdir, name);
   for (const std::string& name : found) {
-    std::filesystem::remove_all(outdir / name, ec);
+    if (name == "snapshots") continue;
+    std::filesystem::remove(outdir / name, ec);
     if (ec) throw InputError(fmt::format("{}: cannot remove {}: {}", outdir.string(), name, ec.message()));
   }
 }
@@ -220,6 +237,7 @@ RunOutcome runSimulation(const RunRequest& request) {
   auto system = buildSystem(config, checkpoint ? &checkpoint->state : nullptr);
   checkChemistryLoad(*system, config);
   if (!resume) prepareOutputFolder(outdir, request.overwrite);
+  for (const char* name : kRunFiles) refuseForeignEntry(outdir, name);
 
   setUpLogging(outdir, resume);
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",

@@ -146,6 +146,30 @@ TEST(HostileInput, OutputFolderWithAnotherRunsResultsNeedsOverwrite) {
   EXPECT_EQ(readFile(dir / "mine" / "notes.txt"), "keep");
 }
 
+// --overwrite removed "exactly cortex's files" with remove_all: a folder named cortex.log
+// went with everything in it, and --resume said "internal error" on one. Such a folder is
+// refused (exit 2) and left alone; files of one's own in snapshots/ outlive an overwrite.
+TEST(HostileInput, OverwriteRemovesOnlyWhatCortexWrote) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), kVesicle);
+  const fs::path out = dir / "out";
+  ASSERT_EQ(runConfig(config, out, {}, dir.path()).exit_code, 0);
+  writeFile(out / "snapshots" / "notes.txt", "keep");
+  ASSERT_EQ(runConfig(config, out, {"--overwrite"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(readFile(out / "snapshots" / "notes.txt"), "keep");
+
+  fs::remove(out / "cortex.log");
+  writeFile(out / "cortex.log" / "data.txt", "precious");
+  for (const std::vector<std::string>& how :
+       {std::vector<std::string>{"run", config.string(), "-o", out.string(), "--overwrite"},
+        std::vector<std::string>{"run", "--resume", out.string()}}) {
+    const RunResult r = runCortex(how, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << describe(r);
+    EXPECT_NE(r.err.find("'cortex.log' is not the file cortex writes there"), std::string::npos) << describe(r);
+    EXPECT_EQ(readFile(out / "cortex.log" / "data.txt"), "precious");
+  }
+}
+
 // --resume continues in place, from the stored config: options it cannot honour are
 // refused instead of ignored.
 TEST(HostileInput, ResumeRefusesWhatItCannotHonour) {
