@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/chemistry_config.hpp"
 #include "io/config_override.hpp"
 #include "io/config_reader.hpp"
@@ -312,11 +312,12 @@ Config parseConfig(const std::string& text, const std::string& source,
 }
 
 Config loadConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot open config file", file.string()));
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseConfig(text.str(), file.string(), file.parent_path(), overrides);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw InputError(fmt::format("{}: cannot open config file", file.string()));
+  // Bounded, and regular files only: /dev/zero as a config (or a sweep's base) was read
+  // until memory ran out, and a folder said "nothing to simulate".
+  constexpr std::size_t kMaxConfigBytes = 16u << 20;
+  return parseConfig(readWholeFile(file, kMaxConfigBytes), file.string(), file.parent_path(), overrides);
 }
 
 }  // namespace cortex

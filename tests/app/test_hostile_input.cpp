@@ -98,6 +98,21 @@ TEST(HostileInput, SeedsOutOfRangeAreRefusedNotClamped) {
 
 // A folder, a device that never ends: refused by name before reading (it used to read
 // /dev/zero until killed).
+// /dev/zero as a config (or a sweep's base) was read until memory ran out; a folder said
+// "nothing to simulate".
+TEST(HostileInput, ConfigsThatAreNotRegularFilesAreRefused) {
+  TempDir dir;
+  for (const std::string& path : {std::string("/dev/zero"), dir.path().string()}) {
+    const RunResult r = runCortex({"check", path}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << describe(r);
+    EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << describe(r);
+  }
+  const fs::path sweep = writeConfig(dir.path(), "base = \"/dev/zero\"\nseeds = 2\n", "sweep.toml");
+  const RunResult r = runCortex({"check", sweep.string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << describe(r);
+}
+
 TEST(HostileInput, MeshFilesThatAreNotRegularFilesAreRefused) {
   TempDir dir;
   fs::create_directories(dir / "folder.obj");
