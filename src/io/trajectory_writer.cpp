@@ -213,9 +213,22 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
       rows_.push_back(observablesOf(file));
       if (index == first_index - 1) names_ = namesOf(file);
     } catch (const std::runtime_error& e) {
-      throw RunError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
-                                 entry.path().string(), e.what()));
+      throw InputError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
+                                   entry.path().string(), e.what()));
     }
+  }
+  // The checkpoint continues snapshots 0 .. first_index - 1: a resume without some of them
+  // ended with exit 0 and a trajectory silently missing those times.
+  if (append && static_cast<std::int64_t>(snapshots_.size()) != first_index) {
+    std::vector<bool> present(static_cast<std::size_t>(first_index), false);
+    for (const XdmfSnapshot& snapshot : snapshots_) present[static_cast<std::size_t>(snapshot.index)] = true;
+    std::vector<std::string> missing;
+    for (std::int64_t i = 0; i < first_index; ++i)
+      if (!present[static_cast<std::size_t>(i)]) missing.push_back(snapshotFile(i));
+    throw InputError(fmt::format("{}: cannot resume the trajectory: {} of the {} snapshot files before the "
+                                 "checkpoint are missing ({}{}); put them back, or start again with --overwrite",
+                                 outdir_.string(), missing.size(), first_index, missing.front(),
+                                 missing.size() > 1 ? ", ..." : ""));
   }
   // The XDMF and the table list snapshots in time order (directory order is arbitrary).
   std::vector<std::size_t> order(snapshots_.size());

@@ -237,6 +237,24 @@ TEST(HostileInput, SizesThatCannotBeBuiltAreRefusedNamingTheKey) {
                              "end_time 1e300 s");
 }
 
+// A resume continues snapshots 0 .. k - 1 of its checkpoint: with some of their files
+// deleted it ended with exit 0 and a trajectory silently missing those times. Refused
+// (exit 2) naming the first missing file; the folder is left as it was.
+TEST(HostileInput, ResumeWithSnapshotsMissingIsRefused) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), kSpecies);
+  const fs::path out = dir / "out";
+  ASSERT_EQ(runConfig(config, out, {"--set", "simulation.end_time=0.01", "--set", "simulation.snapshot_interval=0.002"},
+                      dir.path())
+                .exit_code,
+            0);
+  fs::remove(out / "snapshots" / "000001.h5");
+  const RunResult r = runCortex({"run", "--resume", out.string(), "--set", "simulation.end_time=0.02"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("snapshots/000001.h5"), std::string::npos) << describe(r);
+  EXPECT_FALSE(fs::exists(out / "snapshots" / "000001.h5"));
+}
+
 // A stiffness whose forces dwarf the force tolerance cannot be relaxed to it: bending
 // 1e300 ran 30 s to exit 1, a filament's 1e300 failed with "largest force inf" naming no
 // key. Refused (exit 2) against the scale it makes (io/resolvable_forces.hpp); a stiff
