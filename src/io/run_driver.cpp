@@ -77,10 +77,9 @@ void prepareOutputFolder(const std::filesystem::path& outdir, bool overwrite) {
     throw InputError(fmt::format("{}: holds the results of an earlier run ({}): give another -o, continue it with "
                                  "--resume {}, or replace them with --overwrite",
                                  outdir.string(), fmt::join(found, ", "), outdir.string()));
-  // Only what cortex writes goes: a folder named like one of its files (remove_all
-  // deleted a folder called cortex.log with everything in it) is refused, and the
-  // snapshot folder keeps whatever is not a snapshot (TrajectoryWriter clears those).
-  for (const std::string& name : found) refuseForeignEntry(outdir, name);
+  // Only what cortex writes goes (the caller refused foreign entries first: remove_all
+  // deleted a folder called cortex.log with everything in it), and the snapshot folder
+  // keeps whatever is not a snapshot (TrajectoryWriter clears those).
   for (const std::string& name : found) {
     if (name == "snapshots") continue;
     std::filesystem::remove(outdir / name, ec);
@@ -236,8 +235,8 @@ RunOutcome runSimulation(const RunRequest& request) {
   // Everything that can refuse the input comes before anything is written.
   auto system = buildSystem(config, checkpoint ? &checkpoint->state : nullptr);
   checkChemistryLoad(*system, config);
-  if (!resume) prepareOutputFolder(outdir, request.overwrite);
   for (const char* name : kRunFiles) refuseForeignEntry(outdir, name);
+  if (!resume) prepareOutputFolder(outdir, request.overwrite);
 
   setUpLogging(outdir, resume);
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",

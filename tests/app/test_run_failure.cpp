@@ -118,6 +118,22 @@ TEST(RunFailure, UnboundedEnergyWithDefaultStepFails) {
                             << describe(r);
 }
 
+// The message of the RunError a run of `config` ends with, run in process so that a test
+// can set values past the config reader's checks; empty (a failed expectation) if it
+// does not fail.
+std::string runErrorOf(const Config& config) {
+  System system(config);
+  RunObserver quiet;
+  Simulation sim(system, config.simulation, config.mechanics, quiet);
+  try {
+    sim.run(true);
+  } catch (const RunError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the run did not fail";
+  return "";
+}
+
 // An energy that is not finite where the bodies start (the bundle of
 // examples/bundle_protrusion.toml with an excluded-volume distance of 1e300 nm): the
 // minimizer knows only the total, and the message used to end at "check parameters for
@@ -127,16 +143,8 @@ TEST(RunFailure, UnboundedEnergyWithDefaultStepFails) {
 TEST(RunFailure, ANonFiniteEnergyNamesItsTerm) {
   Config config = loadConfig(sourceDir() / "examples" / "bundle_protrusion.toml", {"simulation.end_time=0.01"});
   config.filaments->types[0].excluded_volume_distance = 1e300;
-  System system(config);
-  RunObserver quiet;
-  Simulation sim(system, config.simulation, config.mechanics, quiet);
-  try {
-    sim.run(true);
-    ADD_FAILURE() << "the run did not fail";
-  } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("the energy term \"excluded_volume\" of \"filaments\""), std::string::npos)
-        << e.what();
-  }
+  const std::string message = runErrorOf(config);
+  EXPECT_NE(message.find("the energy term \"excluded_volume\" of \"filaments\""), std::string::npos) << message;
 }
 
 // A bending modulus of 1e9 pN·nm (1.7e7 pN at 60 nm edges, past what the config reader
@@ -154,16 +162,8 @@ mesh_size = 60.0
 )",
                               "stiff.toml", ".", {});
   config.membranes[0].mechanics.bending.modulus = Schedule(1e9);
-  System system(config);
-  RunObserver quiet;
-  Simulation sim(system, config.simulation, config.mechanics, quiet);
-  try {
-    sim.run(true);
-    ADD_FAILURE() << "the run did not fail";
-  } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("not by the forces recomputed at the final positions"), std::string::npos)
-        << e.what();
-  }
+  const std::string message = runErrorOf(config);
+  EXPECT_NE(message.find("not by the forces recomputed at the final positions"), std::string::npos) << message;
 }
 
 // A reduced volume of 0.999 is more than a 368-vertex sphere encloses at its area (0.9972):
