@@ -9,6 +9,7 @@
 
 #include "chem/compartment_slicing.hpp"
 #include "core/error.hpp"
+#include "interact/inside_membrane.hpp"
 #include "sim/membrane_builder.hpp"
 #include "sim/system.hpp"
 
@@ -66,6 +67,59 @@ void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membra
                  "below 2 compartments across, 10-20% at one; a smaller [compartments] size fixes it "
                  "(docs/chemistry.md)",
                  what);
+  }
+}
+
+namespace {
+
+// Whether some vertex of `surface` lies on `side` of the closed mesh `wall`. Vertices
+// outside the wall's bounding box are outside without a winding number; the search
+// stops at the first vertex found on the side, so a config that passes costs little.
+bool someVertexOnSide(const SurfaceMesh& surface, const SurfaceMesh& wall, bool outside) {
+  Eigen::AlignedBox3d box;
+  for (Index v = 0; v < wall.numVertices(); ++v)
+    if (!wall.isDeletedVertex(v)) box.extend(wall.positions()[v]);
+  for (Index v = 0; v < surface.numVertices(); ++v) {
+    if (surface.isDeletedVertex(v)) continue;
+    const Vec3& p = surface.positions()[v];
+    const bool inside = box.contains(p) && windingNumber(wall, p) > 0.5;
+    if (inside != outside) return true;
+  }
+  return false;
+}
+
+const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& membranes, const std::string& name) {
+  for (const auto& m : membranes)
+    if (m->name() == name) return *m;
+  throw std::logic_error("surface species on an unknown membrane \"" + name + "\"");
+}
+
+}  // namespace
+
+void checkSurfaceReactionSides(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
+                               const std::string& source) {
+  for (std::size_t r = 0; r < config.reactions.size(); ++r) {
+    const ReactionDef& def = config.reactions[r];
+    Index surface = -1, confined = -1;
+    for (const auto* list : {&def.reactants, &def.products})
+      for (const Stoichiometry& x : *list) {
+        const SpeciesDef& s = config.species[x.species];
+        if (s.surface >= 0) surface = s.surface;
+        else if (!config.sides[x.species].membrane.empty()) confined = x.species;
+      }
+    if (surface < 0 || confined < 0) continue;
+    const std::string& on = config.surfaces[surface];
+    const SpeciesSide& side = config.sides[confined];
+    if (side.membrane == on) continue;
+    const std::string key = fmt::format("reaction.{}.equation", r);
+    const Membrane& wall = closedMembrane(membranes, side.membrane, key);
+    if (someVertexOnSide(membraneNamed(membranes, on).mesh(), wall.mesh(), side.outside)) continue;
+    const char* where = side.outside ? "outside" : "inside";
+    throw InputError(fmt::format(
+        "{}: {}: it joins species on membrane \"{}\" with \"{}\", which lives {} membrane \"{}\", but no vertex "
+        "of \"{}\" lies {} \"{}\": the reaction could never fire (a species that reacts with a membrane's "
+        "proteins must be free on a side that membrane touches)",
+        source, key, on, config.species[confined].name, where, side.membrane, on, where, side.membrane));
   }
 }
 

@@ -170,6 +170,70 @@ outside = "sheet"
   expectCheckFails(open, "species.0.outside", "open");
 }
 
+// Proteins on one vesicle unbinding into a species confined by another vesicle: only
+// vertices on the species' side can react. Side by side, the proteins' vesicle never
+// touches the inside of the other, and the reaction (which fired 0 times, exit 0) is
+// refused by name. Nested, the inner vesicle lies inside the outer one: accepted, and it
+// fires; the same with the species outside the outer vesicle is refused again.
+TEST(ConfinedChemistryRun, AMembraneReactionWithASideItsMembraneNeverTouchesIsRefused) {
+  const auto twoVesicles = [](double x2, double r2, const char* side) {
+    return fmt::format(R"([simulation]
+seed = 1
+end_time = 0.02
+chemistry_window = 0.01
+snapshot_interval = 0.01
+
+[[membrane]]
+name = "v1"
+shape = "sphere"
+center = [700.0, 1500.0, 1500.0]
+radius = 500.0
+mesh_size = 100.0
+bending_modulus = 100.0
+
+[[membrane]]
+name = "v2"
+shape = "sphere"
+center = [{}, 1500.0, 1500.0]
+radius = {}
+mesh_size = 60.0
+bending_modulus = 100.0
+
+[[membrane.species]]
+name = "N"
+diffusion = 1.0e5
+copies = 1000
+
+[compartments]
+size = 250.0
+shape = [12, 12, 12]
+
+[[species]]
+name = "G"
+diffusion = 1.0e6
+copies = 100
+{} = "v1"
+
+[[reaction]]
+equation = "N -> G"
+rate = 10.0
+)",
+                       x2, r2, side);
+  };
+  expectCheckFails(twoVesicles(2300.0, 500.0, "inside"), "reaction.0.equation",
+                   "no vertex of \"v2\" lies inside \"v1\": the reaction could never fire");
+  expectCheckFails(twoVesicles(700.0, 250.0, "outside"), "reaction.0.equation",
+                   "no vertex of \"v2\" lies outside \"v1\"");
+  TempDir dir;
+  const RunResult nested =
+      runCortex({"run", writeConfig(dir.path(), twoVesicles(700.0, 250.0, "inside")).string(), "-o",
+                 (dir.path() / "out").string()},
+                dir.path());
+  ASSERT_EQ(nested.exit_code, 0) << describe(nested);
+  // 1000 copies at 10/s for 0.02 s: about 180 unbind (1000 (1 − e^{−0.2})).
+  EXPECT_GT(readJson(dir.path() / "out" / "summary.json")["chemistry"]["reactions"][0]["events"].get<int>(), 100);
+}
+
 // A vesicle under two compartments across is sliced with errors of several percent in
 // its volume (CompartmentSlicing.TheVolumeErrorGrowsAsTheVesicleShrinksToACompartment):
 // check accepts it but says so, naming the membrane and the key that fixes it. The
