@@ -175,11 +175,13 @@ class ChemistryEngine {
   virtual void setSurfaceCoupling(Index a, Index b, std::vector<double> self, std::vector<double> pair) = 0;
 
   // The total propensity (events/s) at the current copies and rates, and the channel
-  // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"").
+  // contributing most (for messages: "diffusion of \"A\"", "reaction \"A -> B\"") with
+  // what sets its rate.
   struct Load {
     double total = 0.0;
     double largest = 0.0;
     std::string largest_channel;
+    std::string largest_cause;
   };
   virtual Load load() const = 0;
   // An advance that would fire more than `max` events (expected from the propensities at

@@ -267,15 +267,21 @@ void EngineBase::setReactionHook(const ReactionRange& range, ReactionHook* hook)
 
 ChemistryEngine::Load EngineBase::load() const {
   Load out;
-  auto note = [&](double value, const std::string& what) {
+  auto note = [&](double value, const std::string& what, const char* cause) {
     out.total += value;
-    if (!(value <= out.largest)) out.largest = value, out.largest_channel = what;
+    if (!(value <= out.largest)) out.largest = value, out.largest_channel = what, out.largest_cause = cause;
   };
   for (Index s = 0; s < S_; ++s) {
     double hops = 0.0;
     for (Index i = region_start_[net_.speciesRegion[s]]; i < region_start_[net_.speciesRegion[s] + 1]; ++i)
       hops += (weighted(s) ? hopOut(i, s) : degree(i) * hop_rate_[s]) * copies_[static_cast<std::size_t>(i) * S_ + s];
-    note(hops, "diffusion of \"" + species_[s].name + "\"");
+    // The hop rates already carry the drift of a membrane species' energies, which can
+    // outgrow the diffusion constant by far (a pair interaction's range past the mesh).
+    const bool biased = !drift_[s].empty() || interacting(s);
+    note(hops, "diffusion of \"" + species_[s].name + "\"",
+         biased ? "check its diffusion constant and the potential, interaction or curvature energy that drives its "
+                  "hops (their height and range)"
+                : "check its diffusion constant");
   }
   for (Index r = 0; r < R_; ++r) {
     double sum = 0.0;
@@ -283,7 +289,7 @@ ChemistryEngine::Load EngineBase::load() const {
       sum += factor_[static_cast<std::size_t>(i) * R_ + r] * constantAt(i, r) * confinementScale(i, r) *
              combinations(net_.kernels[r], &copies_[static_cast<std::size_t>(i) * S_],
                           &copies_[static_cast<std::size_t>(holder_[i]) * S_]);
-    note(sum, "reaction \"" + equations_[r] + "\"");
+    note(sum, "reaction \"" + equations_[r] + "\"", "check its rate");
   }
   return out;
 }
@@ -293,7 +299,7 @@ void EngineBase::checkLoad(double total, double dt, std::int64_t drawn) const {
   if (expected <= event_limit_) return;
   const Load l = load();
   std::string culprit = "the largest channel is " + l.largest_channel + " at " + fmt::format("{:.3g}", l.largest) +
-                        " events/s: check its rate or diffusion constant";
+                        " events/s: " + l.largest_cause;
   // The channels above are the plain rates; what a membrane species' energies multiply
   // them by (drift of hops, e^{V} of unbinding) is only in the engine's total.
   if (l.total < 0.5 * total)

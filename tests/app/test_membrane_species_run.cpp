@@ -209,6 +209,10 @@ TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
   expectCheckFails(patchWith("footprint = 20.0\n[membrane.species.interaction]\nheight = 5.0\nrange = 30.0\n",
                              "[[reaction]]\nequation = \"P -> C\"\nrate = 1.0\n"),
                    "max_events_per_window", "a membrane species' energies multiply");
+  // A pair interaction's range far past the mesh speeds the hops up by e^{βΔV}: the
+  // message names the energy, not only the diffusion constant (it blamed diffusion alone).
+  expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.2\nrange = 1000.0\n"),
+                   "the largest channel is diffusion of \"P\"", "interaction or curvature energy that drives its hops");
   // Every point of a bending-modulus schedule must be > 0 for curvature sensing.
   std::string schedule = patchWith("[membrane.species.curvature]\narea = 20.0\nbending_modulus = 100.0\n");
   replaceOnce(schedule, "bending_modulus = 100.0\narea_model", "bending_modulus = [[0.0, 100.0], [0.01, 0.0]]\narea_model");
