@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
+#include <cstdlib>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -17,10 +19,22 @@ std::vector<std::string> split(const std::string& path) {
   return parts;
 }
 
-toml::node_view<toml::node> parseValue(const std::string& text, toml::table& holder) {
+// Whether all of `text` reads as a number (strtod's grammar), in range or not.
+bool isNumeral(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
+toml::node_view<toml::node> parseValue(const std::string& text, toml::table& holder, const std::string& where) {
   try {
     holder = toml::parse("v = " + text);
-  } catch (const toml::parse_error&) {
+  } catch (const toml::parse_error& e) {
+    // A numeral TOML refuses (1e400, past a double's range) is no bare word: taken as a
+    // string, it was reported as "must be a number, got string".
+    if (isNumeral(text))
+      throw InputError(fmt::format("{}: {} does not read as a number (TOML: {})", where, text, e.description()));
     holder = toml::table{{"v", text}};  // a bare word: take it as a string
   }
   if (holder.size() != 1) holder = toml::table{{"v", text}};  // "1 # x = 2" and the like: not one value
@@ -42,7 +56,7 @@ void applyOverride(toml::table& root, const std::string& assignment) {
                                    assignment.substr(0, assignment.find_first_of("\r\n"))));
   const std::vector<std::string> keys = split(assignment.substr(0, eq));
   toml::table holder;
-  toml::node_view<toml::node> value = parseValue(assignment.substr(eq + 1), holder);
+  toml::node_view<toml::node> value = parseValue(assignment.substr(eq + 1), holder, where);
 
   toml::node* current = &root;
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {

@@ -190,6 +190,13 @@ TEST_F(CliErrors, SetWithBadPath) {
   expectInputError(check(configWith(kSphere), {"--set", "membrane.0.radiuss=300"}), {"membrane.0.radiuss"},
                    false);
   expectInputError(check(configWith(kSphere), {"--set", "membrane.0.radius=-3"}), {"membrane.0.radius"}, false);
+  // A numeral past a double's range is not a bare word: it was taken as a string and
+  // reported as "must be a number, got string". A bare word still is a string.
+  const RunResult huge = check(configWith(kSphere), {"--set", "simulation.end_time=1e400"});
+  expectInputError(huge, {"--set simulation.end_time=1e400", "does not read as a number"}, false);
+  EXPECT_EQ(huge.err.find("got string"), std::string::npos) << describe(huge);
+  expectInputError(check(configWith(kSphere), {"--set", "simulation.end_time=soon"}),
+                   {"simulation.end_time", "got string"});
 }
 
 TEST_F(CliErrors, SetChangesValues) {
