@@ -217,12 +217,20 @@ RunOutcome runSimulation(const RunRequest& request) {
                                            (outdir / "checkpoint.h5").string());
     config = parseConfig(header.config_toml, source, header.base_dir, overrides);
     checkResumable(parseConfig(header.config_toml, source, header.base_dir, {}), config, checkpoint->state.time);
+    // trajectory.h5 carries the run's id: resuming checks that checkpoint and snapshots
+    // are one run's before appending to them.
+    if (!std::filesystem::exists(outdir / "trajectory.h5"))
+      throw InputError(fmt::format("{}: trajectory.h5 is missing (deleted or moved?), and without it resume cannot "
+                                   "tell whether checkpoint.h5 and the snapshots are one run's; restore it, or start "
+                                   "again with --overwrite",
+                                   outdir.string()));
     const std::string trajectory_run = trajectoryRunId(outdir);
+    if (trajectory_run.empty())
+      throw InputError(fmt::format("{}: trajectory.h5 cannot be read (damaged?); cannot resume", outdir.string()));
     if (trajectory_run != header.run_id)
-      throw InputError(fmt::format("{}: checkpoint.h5 belongs to another run than {} (a checkpoint copied in, or "
-                                   "a damaged trajectory); cannot resume",
-                                   outdir.string(), trajectory_run.empty() ? "the missing trajectory.h5"
-                                                                            : "trajectory.h5"));
+      throw InputError(fmt::format("{}: checkpoint.h5 belongs to another run than trajectory.h5 (a checkpoint "
+                                   "copied in?); cannot resume",
+                                   outdir.string()));
   } else {
     config = loadConfig(request.config, overrides);
     outdir = request.output_dir.empty() ? std::filesystem::path(request.config.stem().string() + "_out")

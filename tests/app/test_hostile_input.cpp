@@ -255,6 +255,30 @@ TEST(HostileInput, ResumeWithSnapshotsMissingIsRefused) {
   EXPECT_FALSE(fs::exists(out / "snapshots" / "000001.h5"));
 }
 
+// Without trajectory.h5 (which carries the run's id) resume cannot pair checkpoint and
+// snapshots: it said "checkpoint.h5 belongs to another run than the missing
+// trajectory.h5". It now says the file is missing, and that a damaged one is damaged.
+TEST(HostileInput, ResumeWithoutItsTrajectoryIndexSaysItIsMissing) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), kSpecies);
+  const fs::path out = dir / "out";
+  ASSERT_EQ(runConfig(config, out, {"--set", "simulation.end_time=0.01"}, dir.path()).exit_code, 0);
+  const auto resume = [&] {
+    return runCortex({"run", "--resume", out.string(), "--set", "simulation.end_time=0.02"}, dir.path());
+  };
+  fs::rename(out / "trajectory.h5", dir / "moved.h5");
+  RunResult r = resume();
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("trajectory.h5 is missing"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.err.find("another run"), std::string::npos) << describe(r);
+  std::ofstream(out / "trajectory.h5") << "not HDF5";
+  r = resume();
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("trajectory.h5 cannot be read"), std::string::npos) << describe(r);
+  fs::rename(dir / "moved.h5", out / "trajectory.h5");
+  EXPECT_EQ(resume().exit_code, 0);
+}
+
 // A stiffness whose forces dwarf the force tolerance cannot be relaxed to it: bending
 // 1e300 ran 30 s to exit 1, a filament's 1e300 failed with "largest force inf" naming no
 // key. Refused (exit 2) against the scale it makes (io/resolvable_forces.hpp); a stiff
