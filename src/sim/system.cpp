@@ -2,11 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "filament/filament_terms.hpp"
 #include "interact/membrane_bead_exclusion.hpp"
 #include "interact/membrane_crossing.hpp"
+#include "mech/resolvable_forces.hpp"
+#include "membrane/shape_relaxation.hpp"
 #include "membrane/membrane_terms.hpp"
 #include "sim/chemistry_builder.hpp"
 #include "sim/confinement.hpp"
@@ -16,6 +20,26 @@
 #include "sim/surface_species.hpp"
 
 namespace cortex {
+
+namespace {
+
+// The config reader held the membrane–bead push against [mechanics] force_tolerance. Its
+// forces also act on the membrane's vertices, and a membrane relaxes to its own force
+// scale when no tolerance is given (naturalForceTolerance, far below 0.1 pN for a soft
+// vesicle): a push resolvable at 0.1 pN may not be there. Stiffness 1e11 pN·nm³ with a
+// 250 nm cut-off on a 300 nm vesicle (own tolerance 0.005 pN) failed after 80 s.
+void requireResolvableBeadPush(const Membrane& m, const MembraneBeadExclusionParams& p, const Config& config) {
+  if (config.mechanics.force_tolerance_given) return;
+  const std::string problem = unresolvableForces(
+      2 * constants::kPi * p.stiffness / std::pow(p.cutoff / 2, 3), "2π stiffness / (cutoff/2)³",
+      naturalForceTolerance(m, 0.0),
+      fmt::format("membrane \"{}\"'s own force scale, which its relaxations use when [mechanics] force_tolerance "
+                  "is not given",
+                  m.name()));
+  if (!problem.empty()) throw InputError(fmt::format("{}: membrane_filament.stiffness: {}", config.source, problem));
+}
+
+}  // namespace
 
 System::System(const Config& config, const SystemState* restored) {
   const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
@@ -60,9 +84,13 @@ System::System(const Config& config, const SystemState* restored) {
   FilamentTerms filament_terms;
   if (filaments_) filament_terms = addFilamentTerms(*filaments_, force_field_);
   if (config.membrane_filament && filaments_)
-    for (auto& m : membranes_)
+    for (auto& m : membranes_) {
+      // At the start only: a resumed run keeps what its start accepted, though the
+      // membrane's own scale has moved with its shape since.
+      if (!restored) requireResolvableBeadPush(*m, *config.membrane_filament, config);
       coupling_terms_.push_back(
           &force_field_.add(std::make_unique<MembraneBeadExclusion>(*m, *filaments_, *config.membrane_filament)));
+    }
   if (config.chemistry) buildChemistry(config, restored, filament_terms);
 
   for (const MembraneBeadExclusion* term : coupling_terms_)

@@ -310,6 +310,16 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
   // A cut-off past the vesicle's radius made every bead feel its far side; with a
   // stiffness of 1e12 that run never finished its first relaxation.
   expectRefusedInCheckAndRun(dir, coupled + "cutoff = 500.0\n", "membrane_filament.cutoff", "cutoff 500 nm, radius 200");
+  // The push also acts on the membrane, which relaxes to its own force scale (about
+  // 0.02 pN here) when no tolerance is given: 1e8 (6.3e5 pN, resolvable at 0.1 pN) is not
+  // resolvable there and is refused; given force_tolerance = 0.1, the same is accepted.
+  // (1e11 with a 250 nm cut-off on a 300 nm vesicle passed check and failed after 80 s.)
+  expectRefusedInCheckAndRun(dir, coupled + "stiffness = 1e8\n", "membrane \"vesicle\"'s own force scale",
+                             "membrane-bead stiffness 1e8 pN nm³ against the membrane's tolerance");
+  const fs::path given = writeConfig(
+      dir.path(), "[mechanics]\nforce_tolerance = 0.1\n" + coupled + "stiffness = 1e8\n", "given.toml");
+  const RunResult accepted = runCortex({"check", given.string()}, dir.path());
+  EXPECT_EQ(accepted.exit_code, 0) << describe(accepted);
 
   const fs::path stiff =
       writeConfig(dir.path(), replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\nbending_modulus = 1e5"));
