@@ -207,6 +207,9 @@ void readIdentity(const ConfigReader& r, Protein& p, const std::vector<SpeciesDe
   p.name = r.name("name", p.species);
 }
 
+// 1/(µM·s): a thousand times the diffusion limit of protein association.
+constexpr double kMaxBindingOnRate = 1e6;
+
 // Binding between two filaments, shared by linkers and motors.
 template <class Protein>
 void readBinding(const ConfigReader& r, Protein& p, double force_tolerance) {
@@ -215,7 +218,15 @@ void readBinding(const ConfigReader& r, Protein& p, double force_tolerance) {
   if (!(p.min_distance < p.max_distance))
     r.fail("max_distance",
            fmt::format("({:g} nm) must exceed min_distance ({:g} nm)", p.max_distance, p.min_distance));
+  // Binding picks among the site pairs found at the last minimization and voids those
+  // taken since (thinning). Far past the diffusion limit (~10³ /(µM·s)) the few pairs are
+  // taken at once and the rest of the window is spent on void draws: 1e9 took 70 s for
+  // 0.1 s of a small network. 10⁶ is a thousand times that limit: a unit slip beyond.
   p.on_rate = r.number("on_rate", p.on_rate, Range::nonNegative(), "1/(µM·s)");
+  if (p.on_rate > kMaxBindingOnRate)
+    r.fail("on_rate", fmt::format("{:g} /(µM·s) is over {:g}, a thousand times the diffusion limit of protein "
+                                  "association (~10³ /(µM·s)): is it in 1/(µM·s)?",
+                                  p.on_rate, kMaxBindingOnRate));
   p.off_rate = r.number("off_rate", p.off_rate, Range::nonNegative(), "1/s");
   p.stiffness = r.number("stiffness", p.stiffness, Range::positive(), "pN/nm");
   requireResolvableForces(r, "stiffness", 0.01 * p.stiffness * p.max_distance, "stiffness x max_distance x 1%",

@@ -303,6 +303,12 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
                              "boundary repulsion 1e300");
   // Rounded to whole monomers, a step of 1e300 nm overflowed and walked like 2.7 nm.
   expectRefusedInCheckAndRun(dir, motor + "step_size = 1e300\n", "motor.0.step_size", "motor step 1e300 nm");
+  // Binding at 1e9 /(µM·s) took the few site pairs at once and spent the window on void
+  // draws (70 s for 0.1 s); over 1e6 is refused, a physical on-rate is accepted.
+  expectRefusedInCheckAndRun(dir, motor + "on_rate = 1e9\n", "motor.0.on_rate", "motor on-rate 1e9");
+  const fs::path fast = writeConfig(dir.path(), motor + "on_rate = 1e3\n", "fast.toml");
+  const RunResult fast_check = runCortex({"check", fast.string()}, dir.path());
+  EXPECT_EQ(fast_check.exit_code, 0) << describe(fast_check);
 
   const std::string coupled = std::string(kVesicle) + "[[filament_type]]\nname = \"actin\"\n[membrane_filament]\n";
   expectRefusedInCheckAndRun(dir, coupled + "stiffness = 1e12\n", "membrane_filament.stiffness",
