@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -188,6 +189,9 @@ class ChemistryEngine {
   // its start, or counted while it runs) stops with a RunError instead of running for
   // hours: rates or diffusion constants far too large for the window. Default 1e9.
   virtual void setEventLimit(double max) = 0;
+  // Called within an advance every 2^20 events (with the events limit's check): it may
+  // throw to abandon the advance (a stop request, RunStopped), leaving the engine unusable.
+  virtual void setInterrupt(std::function<void()> poll) = 0;
   // The same refusal now, for an advance of `window` s from the current state, with every
   // factor a membrane species' energies put on its hops and unbinding: what `cortex check`
   // tells before a run starts. Throws RunError with the advance's message.

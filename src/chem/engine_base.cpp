@@ -295,6 +295,7 @@ ChemistryEngine::Load EngineBase::load() const {
 }
 
 void EngineBase::checkLoad(double total, double dt, std::int64_t drawn) const {
+  if (drawn > 0 && interrupt_) interrupt_();
   const double expected = static_cast<double>(drawn) + total * dt;
   if (expected <= event_limit_) return;
   const Load l = load();

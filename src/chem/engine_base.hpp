@@ -25,6 +25,7 @@ class EngineBase : public ChemistryEngine {
   ChemistryState state() const override;
   Load load() const override;
   void setEventLimit(double max) override { event_limit_ = max; }
+  void setInterrupt(std::function<void()> poll) override { interrupt_ = std::move(poll); }
   void checkLoad(double window) const override { checkLoad(totalRate(), window); }
   void restore(const ChemistryState& state) override;
   // Stores the confinement, relocates stranded copies, then lets the engine recompute
@@ -59,10 +60,12 @@ class EngineBase : public ChemistryEngine {
   // expected to exceed the event limit (RunError naming the largest channel). Checked at
   // the start and every 2^20 events: a network that explodes within a window (an
   // autocatalytic reaction) stops within seconds instead of running for hours, or for ever
-  // when a crowding cap turns its events void.
+  // when a crowding cap turns its events void. Within an advance (drawn > 0) it first
+  // calls the interrupt (setInterrupt).
   void checkLoad(double total, double dt, std::int64_t drawn = 0) const;
   static constexpr std::int64_t kLoadCheckInterval = std::int64_t{1} << 20;
   double event_limit_ = 1e9;
+  std::function<void()> interrupt_;
 
   // The total propensity (events/s) as the engine keeps it, energies' factors included.
   virtual double totalRate() const = 0;

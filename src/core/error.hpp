@@ -19,4 +19,12 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A stop request (a signal) that abandons the window in progress, which went on too long
+// to be finished first: the run ends with exit code 3 like any stop, keeping its last
+// checkpoint, from which a resume redoes the abandoned window.
+class RunStopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace cortex

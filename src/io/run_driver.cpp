@@ -264,6 +264,20 @@ RunOutcome runSimulation(const RunRequest& request) {
   RunOutcome outcome;
   try {
     outcome = simulation.run(!resume);
+  } catch (const RunStopped& e) {
+    // Nothing of the abandoned window is written: the files end at the last window done.
+    progress.finish();
+    writer.flush();
+    const double kept = observer.lastCheckpointTime();
+    const std::string status =
+        kept >= 0 ? fmt::format("its checkpoint of t = {:.6g} s is kept; continue with cortex run --resume {}", kept,
+                                outdir.string())
+        : resume ? fmt::format("the checkpoint it resumed from is kept; continue with cortex run --resume {}",
+                               outdir.string())
+                 : "no checkpoint was written yet, so there is nothing to resume";
+    spdlog::warn("stopped by signal {} during window {} ({} completed): {}; {}", stop.signal(), system->step + 1,
+                 system->step, e.what(), status);
+    return RunOutcome::kStopped;
   } catch (const RunError& e) {
     progress.finish();
     try {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "core/error.hpp"
 #include "io/observables.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "sim/frame_builder.hpp"
@@ -59,6 +60,16 @@ void OutputObserver::onCheckpoint(const System& system) {
 
 void OutputObserver::onWindow(const System& system, const MinimizationResult& result) {
   progress_.window(system, result);
+}
+
+void OutputObserver::duringWindow() {
+  if (!stopRequested()) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!stop_seen_) stop_seen_ = now;
+  const double waited = std::chrono::duration<double>(now - *stop_seen_).count();
+  if (waited > kStopGraceSeconds)
+    throw RunStopped(fmt::format("the window in progress was abandoned after the stop request waited {:.0f} s for it",
+                                 waited));
 }
 
 void OutputObserver::onRelaxing(const System& system, const std::string& what, const MinimizerProgress& p) {

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 
 #include "io/checkpoint.hpp"
 #include "io/progress_reporter.hpp"
@@ -25,6 +26,12 @@ class OutputObserver final : public RunObserver {
   void onWindow(const System& system, const MinimizationResult& result) override;
   void onRelaxing(const System& system, const std::string& what, const MinimizerProgress& p) override;
   bool stopRequested() const override { return stop_ && stop_->requested(); }
+  // A stop request waits for the window to end, up to kStopGraceSeconds after it was
+  // first seen here; past that the window is abandoned (RunStopped). A batch system's
+  // grace period before SIGKILL is often 30 s (Slurm's KillWait): the run still ends on
+  // its own terms, with the trajectory index brought up to date.
+  void duringWindow() override;
+  static constexpr double kStopGraceSeconds = 10.0;
   // Time (s) of the last checkpoint this observer wrote; negative if none.
   double lastCheckpointTime() const { return last_checkpoint_; }
 
@@ -37,6 +44,7 @@ class OutputObserver final : public RunObserver {
   const StopSignals* stop_;
   RunInfo run_;
   double last_checkpoint_ = -1.0;
+  std::optional<std::chrono::steady_clock::time_point> stop_seen_;
 };
 
 }  // namespace cortex

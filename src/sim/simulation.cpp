@@ -107,14 +107,19 @@ void Simulation::advanceChemistry(double t_end) {
   ChemistryEngine* chem = system_.chemistry();
   if (!chem) return;
   const auto start = std::chrono::steady_clock::now();
+  chem->setInterrupt([this] { observer_.duringWindow(); });
   chem->advance(t_end);
+  chem->setInterrupt(nullptr);
   system_.collectSurfaceCopies();
   system_.counters.chemistry_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 MinimizerProgressCallback Simulation::progressOf(std::string what) {
-  return [this, what = std::move(what)](const MinimizerProgress& p) { observer_.onRelaxing(system_, what, p); };
+  return [this, what = std::move(what)](const MinimizerProgress& p) {
+    observer_.onRelaxing(system_, what, p);
+    observer_.duringWindow();
+  };
 }
 
 namespace {

@@ -24,6 +24,10 @@ class RunObserver {
   virtual void onRelaxing(const System&, const std::string& /*what*/, const MinimizerProgress&) {}
   // Asked after every window: true stops the run there, after a checkpoint (a signal).
   virtual bool stopRequested() const { return false; }
+  // Called now and then within a window (every relaxation progress report, every 2^20
+  // chemistry events): may throw RunStopped to abandon a window that a stop request has
+  // waited on too long.
+  virtual void duringWindow() {}
 };
 
 // How run() ended: at end_time, or early at a stop request with a checkpoint written.

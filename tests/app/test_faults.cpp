@@ -189,6 +189,42 @@ TEST(Faults, SigtermDuringTheSetUpStopsAfterTheFirstCheckpoint) {
   EXPECT_NE(readFile(out / "cortex.log").find("stopped by signal 15"), std::string::npos);
 }
 
+// A stop waits for the window in progress only so long (10 s, kStopGraceSeconds): here one
+// window of chemistry takes about half a minute, and the run ends about 10 s after SIGTERM
+// with exit 3, the window abandoned, the checkpoint of t = 0 kept and the log saying so.
+// (It waited for the window's end; a relaxation of 15 minutes ignored SIGTERM.)
+TEST(Faults, SigtermAbandonsAWindowThatRunsOnTooLong) {
+  TempDir dir;
+  const fs::path config = writeConfig(dir.path(), R"([simulation]
+end_time = 60.0
+chemistry_window = 60.0
+snapshot_interval = 60.0
+[compartments]
+size = 100.0
+shape = [20, 20, 20]
+[[species]]
+name = "A"
+diffusion = 1.0e6
+copies = 4000
+)");
+  const fs::path out = dir / "out";
+  const pid_t pid = spawnCortex({"run", config.string(), "-o", out.string(), "-q", "--threads", "1"});
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForFile(out / "snapshots" / "000000.h5", 30.0));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // into the window
+  const auto signalled = std::chrono::steady_clock::now();
+  kill(pid, SIGTERM);
+  ASSERT_EQ(waitFor(pid), 3);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
+  EXPECT_GT(seconds, 9.0);   // the grace of 10 s, less the poll interval
+  EXPECT_LT(seconds, 20.0);  // not the ~30 s the window takes
+  const std::string log = readFile(out / "cortex.log");
+  EXPECT_NE(log.find("stopped by signal 15 during window 1 (0 completed)"), std::string::npos) << log;
+  EXPECT_NE(log.find("checkpoint of t = 0 s is kept"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(out / "checkpoint.h5"));
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
 // A second signal stops at once (the default action), without waiting for the window.
 TEST(Faults, SecondSignalStopsAtOnce) {
   TempDir dir;
