@@ -166,6 +166,31 @@ mesh_size = 60.0
   EXPECT_NE(message.find("not by the forces recomputed at the final positions"), std::string::npos) << message;
 }
 
+// A stop request is polled within windows too (OutputObserver::duringWindow abandons a
+// window that outlasts its grace): during the relaxations of membranes and filaments as
+// during chemistry (Faults.SigtermAbandonsAWindowThatRunsOnTooLong), and what it throws
+// ends the run at once, from either relaxation.
+TEST(RunFailure, AStopWithinAWindowIsPolledDuringRelaxations) {
+  struct StopAt final : RunObserver {
+    int calls = 0, stop_at;
+    explicit StopAt(int n) : stop_at(n) {}
+    void duringWindow() override {
+      if (++calls == stop_at) throw RunStopped("stop");
+    }
+  };
+  for (const char* example : {"vesicle_relax.toml", "bundle_protrusion.toml"}) {
+    Config config = loadConfig(sourceDir() / "examples" / example, {"simulation.end_time=0.01"});
+    System system(config);
+    StopAt counting(-1);
+    Simulation(system, config.simulation, config.mechanics, counting).run(true);
+    EXPECT_GT(counting.calls, 0) << example;
+    System again(config);
+    StopAt stopping(1);
+    EXPECT_THROW(Simulation(again, config.simulation, config.mechanics, stopping).run(true), RunStopped) << example;
+    EXPECT_EQ(stopping.calls, 1) << example;
+  }
+}
+
 // A reduced volume of 0.999 is more than a 368-vertex sphere encloses at its area (0.9972):
 // every relaxation failed its constraints and the run went on to exit 0 with warnings.
 TEST(RunFailure, AReducedVolumeTheMeshCannotReachStopsTheRun) {
