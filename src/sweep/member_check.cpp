@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "io/config.hpp"
 #include "io/run_driver.hpp"
 
@@ -19,12 +20,11 @@ std::vector<CheckedMember> checkMembers(const SweepSpec& spec) {
   checked.reserve(spec.members.size());
   for (const SweepMember& member : spec.members) {
     CheckedMember c;
-    c.overrides = memberOverrides(spec, member);
     try {
-      const Config config = loadConfig(spec.base, c.overrides);
+      const Config config = loadConfig(spec.base, memberOverrides(spec, member));
       checkLoadedConfig(config, spec.base);
       c.seed = config.simulation.seed;
-      c.effective_toml = config.effective_toml;
+      c.config_hash = fnv1a64(config.effective_toml);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}: {}", spec.file.string(), describeMember(spec, member.index), e.what()));
     }

@@ -11,10 +11,11 @@
 
 namespace cortex {
 
+// What a sweep keeps of each checked member: two numbers, not its config text (4 KB), so
+// that the documented 10⁶ members fit in memory. Its overrides are memberOverrides again.
 struct CheckedMember {
-  std::vector<std::string> overrides;  // what makes it out of the base config
-  std::int64_t seed = 0;               // its effective simulation.seed
-  std::string effective_toml;          // its whole config, as its run stores it in trajectory.h5
+  std::int64_t seed = 0;          // its effective simulation.seed
+  std::uint64_t config_hash = 0;  // fnv1a64 of its whole config, as its run stores it in trajectory.h5
 };
 
 // Throws InputError naming the sweep file, the member and its settings, and the problem.

@@ -3,11 +3,12 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace cortex {
 
-MemberState memberState(const std::filesystem::path& folder, const std::string& effective_toml) {
+MemberState memberState(const std::filesystem::path& folder, std::uint64_t config_hash) {
   std::error_code ec;
   // trajectory.h5 is written with the first snapshot, before the first checkpoint, and
   // names the run's effective config: without it there is nothing to resume or keep.
@@ -20,7 +21,7 @@ MemberState memberState(const std::filesystem::path& folder, const std::string& 
                                  "member again",
                                  folder.string(), e.what()));
   }
-  if (stored != effective_toml)
+  if (fnv1a64(stored) != config_hash)
     throw InputError(fmt::format("{}: holds a run of another config than this member's (the sweep file or the base "
                                  "config changed since it ran): give another -o, or remove the folder to run the "
                                  "member again",

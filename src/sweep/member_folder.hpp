@@ -2,6 +2,7 @@
 // sweep skips finished members, resumes those with a checkpoint and starts the rest.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -13,9 +14,9 @@ enum class MemberState {
   kFinished,    // summary.json of this member's run: skip
 };
 
-// Throws InputError when the folder holds a run of another config than `effective_toml`
-// (the sweep file or the base config changed since): cortex never mixes such results
-// into one table, nor resumes another run.
-MemberState memberState(const std::filesystem::path& folder, const std::string& effective_toml);
+// Throws InputError when the folder holds a run of another config than the one whose
+// text hashes to `config_hash` (fnv1a64; the sweep file or the base config changed
+// since): cortex never mixes such results into one table, nor resumes another run.
+MemberState memberState(const std::filesystem::path& folder, std::uint64_t config_hash);
 
 }  // namespace cortex

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <thread>
 
@@ -70,7 +71,10 @@ std::shared_ptr<spdlog::logger> sweepLogger(const std::filesystem::path& file, b
 // Hands tasks out in member order as slots free up and records every outcome. After a
 // stop signal (to the sweep or, under MPI, to any rank) nothing more starts and the
 // running members are asked once to stop; the tasks never started stay pending.
-void dispatch(MemberExecutor& executor, const std::vector<MemberTask>& tasks, std::vector<MemberOutcome>& outcomes,
+// Each task is made when it starts (its arguments hold the member's overrides: made all
+// at once, 10⁶ members' would take hundreds of MB).
+void dispatch(MemberExecutor& executor, const std::vector<std::size_t>& pending,
+              const std::function<MemberTask(std::size_t)>& makeTask, std::vector<MemberOutcome>& outcomes,
               spdlog::logger& log) {
   const StopSignals stop;
   std::size_t next = 0, ended = 0;
@@ -80,7 +84,7 @@ void dispatch(MemberExecutor& executor, const std::vector<MemberTask>& tasks, st
     Clock::time_point when;
   };
   std::map<std::size_t, Started> started;
-  while ((!stopping && next < tasks.size()) || executor.running() > 0) {
+  while ((!stopping && next < pending.size()) || executor.running() > 0) {
     std::vector<MemberOutcome> done = executor.collect();
     for (MemberOutcome& outcome : done) {
       const Started& s = started.at(outcome.index);
@@ -88,7 +92,8 @@ void dispatch(MemberExecutor& executor, const std::vector<MemberTask>& tasks, st
       ++ended;
       const auto level = outcome.status == MemberStatus::kOk ? spdlog::level::info : spdlog::level::warn;
       log.log(level, "member {} {} after {:.2f} s [{}/{}]{}", s.folder, statusName(outcome.status), seconds, ended,
-              tasks.size(), outcome.message.empty() ? "" : ": " + outcome.message);
+              pending.size(), outcome.message.empty() ? "" : ": " + outcome.message);
+      started.erase(outcome.index);
       outcomes[outcome.index] = std::move(outcome);
     }
     if (!stopping && (stop.requested() || executor.stopRequested())) {
@@ -97,8 +102,8 @@ void dispatch(MemberExecutor& executor, const std::vector<MemberTask>& tasks, st
                executor.running());
       executor.interruptAll();
     }
-    while (!stopping && next < tasks.size() && executor.hasFreeSlot()) {
-      const MemberTask& task = tasks[next++];
+    while (!stopping && next < pending.size() && executor.hasFreeSlot()) {
+      const MemberTask task = makeTask(pending[next++]);
       log.info("member {} {}", task.folder.string(), task.args.at(1) == "--resume" ? "resumes" : "starts");
       started[task.index] = {task.folder.string(), Clock::now()};
       executor.start(task);
@@ -116,7 +121,7 @@ std::string SweepCoordinator::memberList() const {
   std::string list;
   for (const SweepMember& m : spec_.members)
     list += fmt::format("{}  seed {}  {}\n", memberFolder(spec_, m.index).string(), checked_[m.index].seed,
-                        fmt::join(checked_[m.index].overrides, " "));
+                        fmt::join(memberOverrides(spec_, m), " "));
   return list;
 }
 
@@ -135,37 +140,40 @@ int SweepCoordinator::run(MemberExecutor& executor) {
   const std::size_t n = spec_.members.size();
   std::vector<MemberState> states;
   for (std::size_t i = 0; i < n; ++i)
-    states.push_back(memberState(outdir / memberFolder(spec_, i), checked_[i].effective_toml));
+    states.push_back(memberState(outdir / memberFolder(spec_, i), checked_[i].config_hash));
 
   const auto log = sweepLogger(outdir / "sweep.log", request_.quiet);
   const std::string base = std::filesystem::absolute(spec_.base).string();
   const std::string threads = std::to_string(request_.threads);
   std::vector<MemberOutcome> outcomes(n);
-  std::vector<MemberTask> tasks;
+  std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::filesystem::path folder = memberFolder(spec_, i);
     outcomes[i].index = i;
     if (states[i] == MemberState::kFinished) {
+      const std::filesystem::path folder = memberFolder(spec_, i);
       outcomes[i] = finishedOutcome(i, outdir / folder);
       log->info("member {} finished before: skipped", folder.string());
       continue;
     }
-    MemberTask task{i, outdir, folder, {}};
+    pending.push_back(i);
+  }
+  const auto makeTask = [&](std::size_t i) {
+    MemberTask task{i, outdir, memberFolder(spec_, i), {}};
     if (states[i] == MemberState::kResumable) {
-      task.args = {"run", "--resume", folder.string(), "-q", "--threads", threads};
+      task.args = {"run", "--resume", task.folder.string(), "-q", "--threads", threads};
     } else {
       // --overwrite: a start killed before its first checkpoint may have left a log.
-      task.args = {"run", base, "-o", folder.string(), "--overwrite", "-q", "--threads", threads};
-      for (const std::string& o : checked_[i].overrides) task.args.insert(task.args.end(), {"--set", o});
+      task.args = {"run", base, "-o", task.folder.string(), "--overwrite", "-q", "--threads", threads};
+      for (const std::string& o : memberOverrides(spec_, spec_.members[i])) task.args.insert(task.args.end(), {"--set", o});
     }
-    tasks.push_back(std::move(task));
-  }
+    return task;
+  };
   const std::size_t resumed = static_cast<std::size_t>(std::count(states.begin(), states.end(), MemberState::kResumable));
   log->info("cortex {} sweep {} over {}: {} members; {} finished before, {} to resume, {} to start; on {}",
-            CORTEX_VERSION, spec_.file.string(), base, n, n - tasks.size(), resumed, tasks.size() - resumed,
+            CORTEX_VERSION, spec_.file.string(), base, n, n - pending.size(), resumed, pending.size() - resumed,
             executor.describe());
 
-  dispatch(executor, tasks, outcomes, *log);
+  dispatch(executor, pending, makeTask, outcomes, *log);
 
   std::vector<std::int64_t> seeds;
   for (const CheckedMember& c : checked_) seeds.push_back(c.seed);
