@@ -274,7 +274,7 @@ RunOutcome runSimulation(const RunRequest& request) {
                                 outdir.string())
         : resume ? fmt::format("the checkpoint it resumed from is kept; continue with cortex run --resume {}",
                                outdir.string())
-                 : "no checkpoint was written yet, so there is nothing to resume";
+                 : "no checkpoint was written yet, so there is nothing to resume: start it again with --overwrite";
     spdlog::warn("stopped by signal {} during window {} ({} completed): {}; {}", stop.signal(), system->step + 1,
                  system->step, e.what(), status);
     return RunOutcome::kStopped;

@@ -10,8 +10,8 @@
 #include "interact/membrane_bead_exclusion.hpp"
 #include "interact/membrane_crossing.hpp"
 #include "mech/resolvable_forces.hpp"
-#include "membrane/shape_relaxation.hpp"
 #include "membrane/membrane_terms.hpp"
+#include "membrane/shape_relaxation.hpp"
 #include "sim/chemistry_builder.hpp"
 #include "sim/confinement.hpp"
 #include "sim/filament_builder.hpp"
@@ -24,12 +24,13 @@ namespace cortex {
 namespace {
 
 // The config reader held the membrane–bead push against [mechanics] force_tolerance. Its
-// forces also act on the membrane's vertices, and a membrane relaxes to its own force
-// scale when no tolerance is given (naturalForceTolerance, far below 0.1 pN for a soft
+// forces also act on the membrane's vertices, and under "auto" a membrane relaxes to its
+// own force scale when no tolerance is given (naturalForceTolerance, far below 0.1 pN for a soft
 // vesicle): a push resolvable at 0.1 pN may not be there. Stiffness 1e11 pN·nm³ with a
 // 250 nm cut-off on a 300 nm vesicle (own tolerance 0.005 pN) failed after 80 s.
 void requireResolvableBeadPush(const Membrane& m, const MembraneBeadExclusionParams& p, const Config& config) {
-  if (config.mechanics.force_tolerance_given) return;
+  // Only the "auto" minimizer relaxes membranes by themselves, to their own scale.
+  if (config.mechanics.force_tolerance_given || config.mechanics.kind != MinimizerKind::kAuto) return;
   const std::string problem = unresolvableForces(
       2 * constants::kPi * p.stiffness / std::pow(p.cutoff / 2, 3), "2π stiffness / (cutoff/2)³",
       naturalForceTolerance(m, 0.0),
