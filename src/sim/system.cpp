@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/constants.hpp"
@@ -28,15 +29,21 @@ namespace {
 // own force scale when no tolerance is given (naturalForceTolerance, far below 0.1 pN for a soft
 // vesicle): a push resolvable at 0.1 pN may not be there. Stiffness 1e11 pN·nm³ with a
 // 250 nm cut-off on a 300 nm vesicle (own tolerance 0.005 pN) failed after 80 s.
+//
+// The own scale is taken no lower than kLowestBeadPushTolerance: a giant vesicle's falls
+// to ~1e-8 pN (R = 20 µm at 100 nm edges), where even the default push (0.63 pN) would be
+// refused, while what this guards against is a unit slip thousands of times the default.
+constexpr double kLowestBeadPushTolerance = 1e-3;  // pN
+
 void requireResolvableBeadPush(const Membrane& m, const MembraneBeadExclusionParams& p, const Config& config) {
   // Only the "auto" minimizer relaxes membranes by themselves, to their own scale.
   if (config.mechanics.force_tolerance_given || config.mechanics.kind != MinimizerKind::kAuto) return;
   const std::string problem = unresolvableForces(
       2 * constants::kPi * p.stiffness / std::pow(p.cutoff / 2, 3), "2π stiffness / (cutoff/2)³",
-      naturalForceTolerance(m, 0.0),
-      fmt::format("membrane \"{}\"'s own force scale, which its relaxations use when [mechanics] force_tolerance "
-                  "is not given",
-                  m.name()));
+      std::max(kLowestBeadPushTolerance, naturalForceTolerance(m, 0.0)),
+      fmt::format("membrane \"{}\"'s own force scale (at least {:g} pN), which its relaxations use when "
+                  "[mechanics] force_tolerance is not given",
+                  m.name(), kLowestBeadPushTolerance));
   if (!problem.empty()) throw InputError(fmt::format("{}: membrane_filament.stiffness: {}", config.source, problem));
 }
 

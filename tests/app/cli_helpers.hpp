@@ -156,6 +156,15 @@ inline RunResult runCortex(const std::vector<std::string>& args, const fs::path&
   return runProgram(cortexBinary(), args, capture_dir, env);
 }
 
+// `cortex check` of the config `text` exits 2 with a message naming `key` and saying `words`.
+inline void expectCheckFails(const std::string& text, const std::string& key, const std::string& words) {
+  TempDir dir;
+  const RunResult r = runCortex({"check", writeConfig(dir.path(), text).string()}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+}
+
 // `cortex args...` started in the background, its output discarded.
 inline pid_t spawnCortex(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
   std::vector<std::string> argv_s{cortexBinary().string()};

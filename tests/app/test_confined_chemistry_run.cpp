@@ -129,14 +129,6 @@ TEST(ConfinedChemistryRun, ResumesBitIdentically) {
   expectSameCompartmentCounts(dir / "A" / "trajectory.h5", dir / "B" / "trajectory.h5", {"A", "B", "C"});
 }
 
-void expectCheckFails(const std::string& text, const std::string& key, const std::string& words) {
-  TempDir dir;
-  const RunResult r = runCortex({"check", writeConfig(dir.path(), text).string()}, dir.path());
-  EXPECT_EQ(r.exit_code, 2) << describe(r);
-  EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
-}
-
 TEST(ConfinedChemistryRun, BadConfinementNamesTheKey) {
   std::string unknown = confinedConfig(0.1);
   unknown.replace(unknown.find("inside = \"vesicle\""), 18, "inside = \"cell\"");

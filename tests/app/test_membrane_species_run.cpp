@@ -55,14 +55,6 @@ TEST(MembraneSpeciesRun, SnapshotsHoldCopiesPerVertexAndResumeBitIdentically) {
   EXPECT_EQ(readJson(dir / "A" / "summary.json")["chemistry"]["species"]["P"].get<int>(), 5000);
 }
 
-void expectCheckFails(const std::string& text, const std::string& key, const std::string& words) {
-  TempDir dir;
-  const RunResult r = runCortex({"check", writeConfig(dir.path(), text).string()}, dir.path());
-  EXPECT_EQ(r.exit_code, 2) << describe(r);
-  EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
-}
-
 void replaceOnce(std::string& text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   ASSERT_NE(at, std::string::npos) << from;
