@@ -93,6 +93,7 @@ void refuseFrozenOverrides(const std::vector<std::string>& overrides) {
   static const std::regex frozen(
       R"(^(simulation\.(seed|chemistry_window)|compartments(\..*)?|chemistry\.engine|)"
       R"(membrane\.[0-9]+\.(name|shape|mesher|center|radius|radii|size|file|mesh_size|boundary|min_size|max_size|remesh_tolerance)|)"
+      R"(membrane\.[0-9]+\.species\.[0-9]+\.(name|copies|density|region|footprint)|)"
       R"(species\.[0-9]+\.(name|copies|concentration|inside|outside)|reaction\.[0-9]+\.equation|)"
       R"(filament_type\.[0-9]+\.(name|monomer_species|monomer_size|cylinder_monomers)|filaments(\..*)?|)"
       R"((linker|motor|brancher)\.[0-9]+\.(name|species|site_spacing|step_size|filament_type))$)");

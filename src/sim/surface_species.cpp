@@ -90,6 +90,17 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
       }
       // With a footprint, the copies of all such species share a vertex's area as the
       // engine counts them (SpeciesDef::footprint): a vertex holds at most `room` more.
+      // A footprint past every vertex's room holds no copy anywhere: binding onto the
+      // membrane was accepted and never fired (exit 0, 0 events).
+      if (s.footprint > 0.0) {
+        double largest = 0.0;
+        for (Index v = 0; v < n; ++v) largest = std::max(largest, crowdingRoom(area[v]));
+        if (s.footprint > largest)
+          throw InputError(fmt::format("{}: footprint {:g} nm^2 exceeds the room of every vertex (at most {:.4g} "
+                                       "nm^2, about 0.87 mesh_size²): no copy could ever sit on the membrane; "
+                                       "a copy must fit in a vertex's cell",
+                                       where, s.footprint, largest));
+      }
       std::vector<std::int64_t> room(static_cast<std::size_t>(n), 0);
       double places = 0.0;
       for (Index v = 0; v < n; ++v) {

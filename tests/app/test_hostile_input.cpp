@@ -195,7 +195,11 @@ TEST(HostileInput, ResumeRefusesWhatItCannotHonour) {
   for (const std::vector<std::string>& extra :
        {std::vector<std::string>{"-o", (dir / "other").string()}, std::vector<std::string>{"--overwrite"},
         std::vector<std::string>{"--set", "membrane.0.radius=300.0"},
-        std::vector<std::string>{"--set", "simulation.seed=4"}}) {
+        std::vector<std::string>{"--set", "simulation.seed=4"},
+        // Membrane species' initial copies were ignored on resume (exit 0, the stored
+        // copies unchanged); a footprint the stored copies overfill was taken.
+        std::vector<std::string>{"--set", "membrane.0.species.0.copies=5000"},
+        std::vector<std::string>{"--set", "membrane.0.species.0.footprint=1e6"}}) {
     std::vector<std::string> args{"run", "--resume", out.string(), "-q"};
     args.insert(args.end(), extra.begin(), extra.end());
     const RunResult r = runCortex(args, dir.path());
@@ -303,6 +307,10 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
                              "boundary repulsion 1e300");
   // Rounded to whole monomers, a step of 1e300 nm overflowed and walked like 2.7 nm.
   expectRefusedInCheckAndRun(dir, motor + "step_size = 1e300\n", "motor.0.step_size", "motor step 1e300 nm");
+  // Cylinders of 0.044 nm (monomer_size 0.0011) overlapped their own filament's excluded
+  // volume: 83 s to exit 1 with 1e6 pN, or 4 GB placing linker sites.
+  expectRefusedInCheckAndRun(dir, filaments + "monomer_size = 0.0011\n", "filament_type.0.monomer_size",
+                             "cylinders of 0.044 nm");
   // Binding at 1e9 /(µM·s) took the few site pairs at once and spent the window on void
   // draws (70 s for 0.1 s); over 1e6 is refused, a physical on-rate is accepted.
   expectRefusedInCheckAndRun(dir, motor + "on_rate = 1e9\n", "motor.0.on_rate", "motor on-rate 1e9");

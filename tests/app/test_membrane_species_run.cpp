@@ -201,6 +201,9 @@ TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
   expectCheckFails(patchWith("footprint = 20.0\n[membrane.species.interaction]\nheight = 5.0\nrange = 30.0\n",
                              "[[reaction]]\nequation = \"P -> C\"\nrate = 1.0\n"),
                    "max_events_per_window", "a membrane species' energies multiply");
+  // A footprint past every vertex's cell: no copy could ever sit there (with no initial
+  // copies, binding onto the membrane was accepted and fired 0 times).
+  expectCheckFails(patchWith("footprint = 1.0e6\n"), "species \"P\"", "exceeds the room of every vertex");
   // A pair interaction's range far past the mesh speeds the hops up by e^{βΔV}: the
   // message names the energy, not only the diffusion constant (it blamed diffusion alone).
   expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.2\nrange = 1000.0\n"),
