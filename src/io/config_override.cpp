@@ -78,6 +78,10 @@ void applyOverride(toml::table& root, const std::string& assignment) {
     }
   }
   toml::table* parent = current->as_table();
+  if (!parent && current->is_array())
+    throw InputError(fmt::format("{}: an entry of an array of tables cannot be replaced by a value; set one of its "
+                                 "keys ({}.radius=..., for example)",
+                                 where, assignment.substr(0, eq)));
   if (!parent) throw InputError(fmt::format("{}: cannot set a key inside a non-table", where));
   parent->insert_or_assign(keys.back(), *value.node());
 }

@@ -62,6 +62,20 @@ void checkLoadedScale(const SurfaceMesh& mesh, const std::string& where) {
                                  where, edge));
 }
 
+// The generated shape's mesh; a mesh_size too coarse for the shape is named as the key it
+// is (the message named the mesher's function, meshImplicitSurface).
+TriangleSoup generatedMesh(const MembraneConfig& c, const std::string& where) {
+  try {
+    return initialMesh(c);
+  } catch (const InputError& e) {
+    if (c.shape != "sphere" && c.shape != "ellipsoid") throw;
+    throw InputError(fmt::format("{}: mesh_size = {:g} nm is too coarse to mesh a shape whose smallest radius is {:g} "
+                                 "nm ({}); keep it under about 0.7 x that radius{}",
+                                 where, c.mesh_size, c.radii.minCoeff(), e.what(),
+                                 c.shape == "sphere" ? " (or use mesher = \"icosphere\")" : ""));
+  }
+}
+
 void reverseOrientation(TriangleSoup& soup) {
   for (Tri& t : soup.triangles) std::swap(t[1], t[2]);
 }
@@ -71,7 +85,7 @@ void reverseOrientation(TriangleSoup& soup) {
 std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::string& source,
                                         const MembraneState* restored) {
   const std::string where = fmt::format("{}: membrane \"{}\"", source, c.name);
-  TriangleSoup soup = restored ? restored->mesh : initialMesh(c);
+  TriangleSoup soup = restored ? restored->mesh : generatedMesh(c, where);
   const std::string mesh_source = c.shape == "mesh" && !restored ? c.file.string() : where;
   SurfaceMesh mesh = SurfaceMesh::fromSoup(soup, mesh_source);
   if (c.shape == "mesh" && !restored) checkLoadedScale(mesh, where + ", file " + c.file.string());

@@ -190,6 +190,9 @@ TEST_F(CliErrors, SetWithBadPath) {
   expectInputError(check(configWith(kSphere), {"--set", "membrane.0.radiuss=300"}), {"membrane.0.radiuss"},
                    false);
   expectInputError(check(configWith(kSphere), {"--set", "membrane.0.radius=-3"}), {"membrane.0.radius"}, false);
+  // An entry of an array of tables given a value: it said "cannot set a key inside a non-table".
+  expectInputError(check(configWith(kSphere), {"--set", "membrane.0=1"}),
+                   {"--set membrane.0=1", "cannot be replaced by a value"}, false);
   // A numeral past a double's range is not a bare word: it was taken as a string and
   // reported as "must be a number, got string". A bare word still is a string.
   const RunResult huge = check(configWith(kSphere), {"--set", "simulation.end_time=1e400"});

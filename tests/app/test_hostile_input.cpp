@@ -259,6 +259,19 @@ TEST(HostileInput, ResumeWithSnapshotsMissingIsRefused) {
   EXPECT_FALSE(fs::exists(out / "snapshots" / "000001.h5"));
 }
 
+// A mesh_size the marching-tetrahedra mesher cannot resolve (the docs allowed up to the
+// radius) named the mesher's function; it names the key and the limit, for spheres and
+// thin ellipsoids alike.
+TEST(HostileInput, AMeshTooCoarseForItsShapeNamesMeshSize) {
+  TempDir dir;
+  expectRefusedInCheckAndRun(dir, replaced(kVesicle, "radius = 200.0\nmesh_size = 40.0", "radius = 40.0\nmesh_size = 40.0"),
+                             "mesh_size = 40 nm is too coarse", "sphere of radius 40 at mesh 40");
+  expectRefusedInCheckAndRun(dir,
+                             replaced(replaced(kVesicle, "shape = \"sphere\"", "shape = \"ellipsoid\""),
+                                      "radius = 200.0", "radii = [400.0, 400.0, 40.0]"),
+                             "under about 0.7 x that radius", "ellipsoid 40 nm thin at mesh 40");
+}
+
 // Without trajectory.h5 (which carries the run's id) resume cannot pair checkpoint and
 // snapshots: it said "checkpoint.h5 belongs to another run than the missing
 // trajectory.h5". It now says the file is missing, and that a damaged one is damaged.
