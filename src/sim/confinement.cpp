@@ -1,6 +1,7 @@
 #include "sim/confinement.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <Eigen/Geometry>
@@ -88,6 +89,13 @@ bool someVertexOnSide(const SurfaceMesh& surface, const SurfaceMesh& wall, bool 
   return false;
 }
 
+bool someVertexInBox(const SurfaceMesh& surface, const CompartmentGrid& grid) {
+  const Eigen::AlignedBox3d box(Vec3::Zero(), grid.extent());
+  for (Index v = 0; v < surface.numVertices(); ++v)
+    if (!surface.isDeletedVertex(v) && box.contains(surface.positions()[v])) return true;
+  return false;
+}
+
 const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& membranes, const std::string& name) {
   for (const auto& m : membranes)
     if (m->name() == name) return *m;
@@ -98,20 +106,31 @@ const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& memb
 
 void checkSurfaceReactionSides(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
                                const std::string& source) {
+  const CompartmentGrid& grid = config.grid;
   for (std::size_t r = 0; r < config.reactions.size(); ++r) {
     const ReactionDef& def = config.reactions[r];
     Index surface = -1, confined = -1;
+    bool has3D = false;
     for (const auto* list : {&def.reactants, &def.products})
       for (const Stoichiometry& x : *list) {
         const SpeciesDef& s = config.species[x.species];
         if (s.surface >= 0) surface = s.surface;
-        else if (!config.sides[x.species].membrane.empty()) confined = x.species;
+        else has3D = true;
+        if (s.surface < 0 && !config.sides[x.species].membrane.empty()) confined = x.species;
       }
-    if (surface < 0 || confined < 0) continue;
+    if (surface < 0 || !(confined >= 0 || has3D)) continue;
     const std::string& on = config.surfaces[surface];
+    const std::string key = fmt::format("reaction.{}.equation", r);
+    // Its 3D species are those of the compartment holding each vertex, found by clamping
+    // into the grid: a membrane wholly outside reacted with a compartment far away.
+    if (!someVertexInBox(membraneNamed(membranes, on).mesh(), grid))
+      throw InputError(fmt::format("{}: {}: it joins species on membrane \"{}\" with 3D species, but no vertex of "
+                                   "\"{}\" lies inside the compartment grid (the box from [0, 0, 0] to [{}] nm): place the membrane in the "
+                                   "grid or widen [compartments]",
+                                   source, key, on, on, fmt::join(grid.extent(), ", ")));
+    if (confined < 0) continue;
     const SpeciesSide& side = config.sides[confined];
     if (side.membrane == on) continue;
-    const std::string key = fmt::format("reaction.{}.equation", r);
     const Membrane& wall = closedMembrane(membranes, side.membrane, key);
     if (someVertexOnSide(membraneNamed(membranes, on).mesh(), wall.mesh(), side.outside)) continue;
     const char* where = side.outside ? "outside" : "inside";

@@ -216,6 +216,10 @@ rate = 10.0
                    "no vertex of \"v2\" lies inside \"v1\": the reaction could never fire");
   expectCheckFails(twoVesicles(700.0, 250.0, "outside"), "reaction.0.equation",
                    "no vertex of \"v2\" lies outside \"v1\"");
+  // Proteins on a vesicle outside the grid reacted with the compartment nearest to it.
+  std::string far = twoVesicles(2300.0, 500.0, "inside");
+  far.replace(far.find("center = [2300,"), 15, "center = [9.0e4,");
+  expectCheckFails(far, "reaction.0.equation", "no vertex of \"v2\" lies inside the compartment grid");
   TempDir dir;
   const RunResult nested =
       runCortex({"run", writeConfig(dir.path(), twoVesicles(700.0, 250.0, "inside")).string(), "-o",
