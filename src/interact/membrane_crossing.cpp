@@ -40,4 +40,39 @@ std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, c
   return std::nullopt;
 }
 
+namespace {
+
+// The first edge of `a` (as triangle, corner) meeting a triangle of `b`, described.
+std::optional<std::string> edgeThrough(const Membrane& a, const Membrane& b) {
+  const auto& xa = a.mesh().positions();
+  const auto& xb = b.mesh().positions();
+  const auto& ta = a.topology().triangles;
+  const auto& tb = b.topology().triangles;
+  double half_length = 0.0;
+  for (const Tri& t : ta)
+    for (int k = 0; k < 3; ++k) half_length = std::max(half_length, 0.5 * (xa[t[(k + 1) % 3]] - xa[t[k]]).norm());
+  const TriangleCells cells(xb, tb, half_length);
+  for (const Tri& t : ta)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &p = xa[t[k]], &q = xa[t[(k + 1) % 3]];
+      std::optional<Index> met;
+      cells.near(0.5 * (p + q), [&](Index f) {
+        const Tri& u = tb[f];
+        if (!met && segmentMeetsTriangle(p, q, xb[u[0]], xb[u[1]], xb[u[2]])) met = f;
+      });
+      if (met)
+        return fmt::format("the edge of \"{}\" from ({:.4g}, {:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) nm meets "
+                           "triangle {} of \"{}\"",
+                           a.name(), p[0], p[1], p[2], q[0], q[1], q[2], *met, b.name());
+    }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> findMembranesCrossing(const Membrane& a, const Membrane& b) {
+  if (auto where = edgeThrough(a, b)) return where;
+  return edgeThrough(b, a);
+}
+
 }  // namespace cortex

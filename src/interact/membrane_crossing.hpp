@@ -20,4 +20,9 @@ struct MembraneCrossing {
 // The first crossing in (filament, cylinder, triangle) order, if any.
 std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, const FilamentNetwork& network);
 
+// Whether two membranes pass through each other: some edge of one meets a triangle of the
+// other (two meshes that intersect always have such an edge, in one direction or the
+// other). Membranes do not interact, so cortex refuses them at the start; it says where.
+std::optional<std::string> findMembranesCrossing(const Membrane& a, const Membrane& b);
+
 }  // namespace cortex

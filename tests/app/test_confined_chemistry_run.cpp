@@ -166,7 +166,8 @@ outside = "sheet"
 // vertices on the species' side can react. Side by side, the proteins' vesicle never
 // touches the inside of the other, and the reaction (which fired 0 times, exit 0) is
 // refused by name. Nested, the inner vesicle lies inside the outer one: accepted, and it
-// fires; the same with the species outside the outer vesicle is refused again.
+// fires; the same with the species outside the outer vesicle is refused again. Vesicles
+// that cut each other are refused, whatever their species.
 TEST(ConfinedChemistryRun, AMembraneReactionWithASideItsMembraneNeverTouchesIsRefused) {
   const auto twoVesicles = [](double x2, double r2, const char* side) {
     return fmt::format(R"([simulation]
@@ -216,6 +217,9 @@ rate = 10.0
                    "no vertex of \"v2\" lies inside \"v1\": the reaction could never fire");
   expectCheckFails(twoVesicles(700.0, 250.0, "outside"), "reaction.0.equation",
                    "no vertex of \"v2\" lies outside \"v1\"");
+  // Vesicles that pass through each other overlapped their insides all run long (exit 0).
+  expectCheckFails(twoVesicles(1100.0, 500.0, "inside"), "membranes \"v1\" and \"v2\" pass through each other",
+                   "must start apart");
   // Proteins on a vesicle outside the grid reacted with the compartment nearest to it.
   std::string far = twoVesicles(2300.0, 500.0, "inside");
   far.replace(far.find("center = [2300,"), 15, "center = [9.0e4,");
