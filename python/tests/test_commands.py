@@ -43,6 +43,9 @@ def surface_of_revolution(body, radius, reach, axis, centre, rings=400, around=6
 class CommandsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
+        # On a fresh machine the first use of matplotlib's fonts builds its cache and says so
+        # on stderr: once here, not inside a test that counts the lines a command writes.
+        import matplotlib.font_manager  # noqa: F401
         cls.runs = {name: runs.path(name) for name in ("vesicle", "patch", "filaments", "species", "bundle", "barrier", "sorting",
                                                   "llps", "tubes")}
         cls.tmp = tempfile.TemporaryDirectory()
