@@ -308,6 +308,20 @@ void Simulation::checkCrossings(const char* when) const {
                                  system_.time(), when, crossing->describe(term->membrane())));
 }
 
+void Simulation::checkMembranesApart() const {
+  // Membranes do not push on each other: one moved through another (a vesicle swelling
+  // into its neighbour) is no state the model describes, and stops the run.
+  const auto& membranes = system_.membranes();
+  for (std::size_t i = 0; i < membranes.size(); ++i)
+    for (std::size_t j = i + 1; j < membranes.size(); ++j)
+      if (const auto where = findMembranesCrossing(*membranes[i], *membranes[j]))
+        throw RunError(fmt::format("t = {:.6g} s, after the relaxation: membranes \"{}\" and \"{}\" pass through "
+                                   "each other ({}); "
+                                   "membranes do not push on each other in cortex, so nothing keeps them apart: "
+                                   "start them farther apart or change what drives them together",
+                                   system_.time(), membranes[i]->name(), membranes[j]->name(), *where));
+}
+
 // A minimizer that met a non-finite energy knows only the total: name the terms that are
 // not finite where the bodies stand (a bending stiffness of 1e300 said only "energy is
 // inf ... check parameters for impossible values").
@@ -349,6 +363,7 @@ MinimizationResult Simulation::relax() {
   checkCoats(coverage);  // empty without mechanics: nothing relaxed
   checkMeshes();
   checkCrossings("after the relaxation");
+  checkMembranesApart();
   checkRelaxation(r);
   // Membranes and filaments moved: confinement, loads, tensions and binding partners
   // change the rates.

@@ -58,6 +58,9 @@ class Simulation {
   void checkMeshes() const;
   // A filament through a membrane is an error (exit 1), named with `when` it was found.
   void checkCrossings(const char* when) const;
+  // Two membranes through each other after a relaxation (only relaxations move them) are
+  // an error (exit 1): nothing in the model keeps them apart.
+  void checkMembranesApart() const;
   // A relaxation that ended far from the tolerance is an error, not a warning.
   void checkRelaxation(const MinimizationResult& r) const;
   // A relaxation that thinned a coat by stretching its cells is an error: the model keeps

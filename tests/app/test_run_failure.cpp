@@ -166,6 +166,42 @@ mesh_size = 60.0
   EXPECT_NE(message.find("not by the forces recomputed at the final positions"), std::string::npos) << message;
 }
 
+// Membranes do not push on each other: two that come to pass through each other during a
+// run stop it (exit 1) instead of going on with their insides overlapping. Here the
+// second vesicle is moved 150 nm into the first after the start's check, as a swelling or
+// drifting one would come; the first relaxation's check finds them.
+TEST(RunFailure, MembranesThatComeToPassThroughEachOtherStopTheRun) {
+  const Config config = parseConfig(R"([simulation]
+end_time = 0.01
+chemistry_window = 0.01
+[[membrane]]
+name = "left"
+shape = "sphere"
+center = [0.0, 0.0, 0.0]
+radius = 300.0
+mesh_size = 60.0
+[[membrane]]
+name = "right"
+shape = "sphere"
+center = [620.0, 0.0, 0.0]
+radius = 300.0
+mesh_size = 60.0
+)",
+                                    "apart.toml", ".", {});
+  System system(config);
+  for (Vec3& x : system.membranes()[1]->mesh().positions()) x.x() -= 150.0;
+  RunObserver quiet;
+  Simulation sim(system, config.simulation, config.mechanics, quiet);
+  try {
+    sim.run(true);
+    ADD_FAILURE() << "the run did not fail";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("membranes \"left\" and \"right\" pass through each other"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A stop request is polled within windows too (OutputObserver::duringWindow abandons a
 // window that outlasts its grace): during the relaxations of membranes and filaments as
 // during chemistry (Faults.SigtermAbandonsAWindowThatRunsOnTooLong), and what it throws
