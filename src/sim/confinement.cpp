@@ -104,7 +104,7 @@ const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& memb
 
 }  // namespace
 
-void checkSurfaceReactionSides(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
+void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
                                const std::string& source) {
   const CompartmentGrid& grid = config.grid;
   for (std::size_t r = 0; r < config.reactions.size(); ++r) {

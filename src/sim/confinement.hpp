@@ -40,7 +40,7 @@ void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membra
 // Throws InputError (naming the reaction) when no vertex lies there: it could never fire, and a run
 // would report zero events as if that were the rate's doing. Nested vesicles pass (the
 // inner one's vertices are inside the outer one); a membrane's own sides always do.
-void checkSurfaceReactionSides(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
+void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
                                const std::string& source);
 
 class ConfinementFeedback final : public Feedback {

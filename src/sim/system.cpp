@@ -137,7 +137,7 @@ System::~System() = default;
 void System::buildChemistry(const Config& config, const SystemState* restored, const FilamentTerms& filament_terms) {
   const ChemistryConfig& cc = *config.chemistry;
   checkSlicingResolution(membranes_, cc);  // before anything is built on the slices
-  checkSurfaceReactionSides(membranes_, cc, config.source);
+  checkSurfaceReactionsCanFire(membranes_, cc, config.source);
   const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
   chemistry_model_ = cortex::chemistryModel(cc);
   const ReactionRange config_reactions = chemistry_model_.ranges.front();

@@ -2,6 +2,7 @@
 // signal, a full disk, damaged and foreign checkpoints: the outputs stay whole, resume
 // gives the uninterrupted result, and failures are errors naming the file.
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -189,16 +190,14 @@ TEST(Faults, SigtermDuringTheSetUpStopsAfterTheFirstCheckpoint) {
   EXPECT_NE(readFile(out / "cortex.log").find("stopped by signal 15"), std::string::npos);
 }
 
-// A stop waits for the window in progress only so long (10 s, kStopGraceSeconds): here one
-// window of chemistry takes about half a minute, and the run ends about 10 s after SIGTERM
-// with exit 3, the window abandoned, the checkpoint of t = 0 kept and the log saying so.
-// (It waited for the window's end; a relaxation of 15 minutes ignored SIGTERM.)
-TEST(Faults, SigtermAbandonsAWindowThatRunsOnTooLong) {
-  TempDir dir;
-  const fs::path config = writeConfig(dir.path(), R"([simulation]
-end_time = 60.0
-chemistry_window = 60.0
-snapshot_interval = 60.0
+// Starts a run into dir/out of one window of pure chemistry, `seconds` long in simulated
+// time (about half that in wall time here), and returns 300 ms into that window, after
+// its first snapshot; its pid, or -1 (a failed expectation) if it did not get there.
+pid_t startIntoOneChemistryWindow(const TempDir& dir, double seconds) {
+  const fs::path config = writeConfig(dir.path(), fmt::format(R"([simulation]
+end_time = {0:.1f}
+chemistry_window = {0:.1f}
+snapshot_interval = {0:.1f}
 [compartments]
 size = 100.0
 shape = [20, 20, 20]
@@ -206,12 +205,27 @@ shape = [20, 20, 20]
 name = "A"
 diffusion = 1.0e6
 copies = 4000
-)");
+)",
+                                                              seconds));
   const fs::path out = dir / "out";
   const pid_t pid = spawnCortex({"run", config.string(), "-o", out.string(), "-q", "--threads", "1"});
-  ASSERT_GT(pid, 0);
-  ASSERT_TRUE(waitForFile(out / "snapshots" / "000000.h5", 30.0));
+  if (pid <= 0 || !waitForFile(out / "snapshots" / "000000.h5", 30.0)) {
+    ADD_FAILURE() << "the run did not reach its first window";
+    return -1;
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // into the window
+  return pid;
+}
+
+// A stop waits for the window in progress only so long (10 s, kStopGraceSeconds): here one
+// window of chemistry takes about half a minute, and the run ends about 10 s after SIGTERM
+// with exit 3, the window abandoned, the checkpoint of t = 0 kept and the log saying so.
+// (It waited for the window's end; a relaxation of 15 minutes ignored SIGTERM.)
+TEST(Faults, SigtermAbandonsAWindowThatRunsOnTooLong) {
+  TempDir dir;
+  const fs::path out = dir / "out";
+  const pid_t pid = startIntoOneChemistryWindow(dir, 60.0);
+  ASSERT_GT(pid, 0);
   const auto signalled = std::chrono::steady_clock::now();
   kill(pid, SIGTERM);
   ASSERT_EQ(waitFor(pid), 3);
@@ -229,23 +243,8 @@ copies = 4000
 TEST(Faults, SecondSignalStopsAtOnce) {
   TempDir dir;
   // One window of a few seconds: the first signal waits for its end.
-  const fs::path config = writeConfig(dir.path(), R"([simulation]
-end_time = 10.0
-chemistry_window = 10.0
-snapshot_interval = 10.0
-[compartments]
-size = 100.0
-shape = [20, 20, 20]
-[[species]]
-name = "A"
-diffusion = 1.0e6
-copies = 4000
-)");
-  const fs::path out = dir / "out";
-  const pid_t pid = spawnCortex({"run", config.string(), "-o", out.string(), "-q", "--threads", "1"});
+  const pid_t pid = startIntoOneChemistryWindow(dir, 10.0);
   ASSERT_GT(pid, 0);
-  ASSERT_TRUE(waitForFile(out / "snapshots" / "000000.h5", 30.0));
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // into the window
   kill(pid, SIGINT);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   kill(pid, SIGINT);
