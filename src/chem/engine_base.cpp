@@ -133,13 +133,18 @@ void EngineBase::refreshBindingWeights(Index h) {
 }
 
 Index EngineBase::drawBindingSite(Index h, Index r) {
-  double x = rng_.uniform() * bindingWeightSum(h, r);
+  // The weights once, summed in bindingWeightSum's order (the same sum to the bit).
+  const auto& sites = held_[h];
+  site_weights_.resize(sites.size());
+  double sum = 0.0;
+  for (std::size_t k = 0; k < sites.size(); ++k) sum += site_weights_[k] = bindingWeight(sites[k], r);
+  double x = rng_.uniform() * sum;
   Index last = -1;
-  for (Index j : held_[h]) {
-    const double w = bindingWeight(j, r);
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const double w = site_weights_[k];
     if (!(w > 0.0)) continue;
-    last = j;
-    if (x < w) return j;
+    last = sites[k];
+    if (x < w) return last;
     x -= w;
   }
   return last;  // rounding at the end

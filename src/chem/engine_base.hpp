@@ -239,6 +239,7 @@ class EngineBase : public ChemistryEngine {
   std::vector<std::vector<double>> drift_;
   std::vector<Index> aggregated_;       // the aggregated reactions
   std::vector<double> binding_weight_;  // [h * R + r] over the 3D subvolumes, for aggregated r
+  std::vector<double> site_weights_;   // drawBindingSite's scratch: the weights of one holder's sites
   // Per species: its interaction (potential, self and pair per region-local subvolume and
   // edge; empty for none) and field R per region-local subvolume.
   std::vector<SurfaceInteraction> interaction_;
