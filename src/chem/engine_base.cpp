@@ -34,8 +34,13 @@ EngineBase::EngineBase(const ChemistryModel& model, const std::vector<int>& copi
       paired_(S_, 0),
       couplings_(S_) {
   for (const ReactionDef& r : model.reactions) equations_.push_back(r.equation);
+  aggregated_slot_.assign(R_, -1);
   for (Index r = 0; r < R_; ++r)
-    if (aggregated(r)) aggregated_.push_back(r);
+    if (aggregated(r)) {
+      aggregated_slot_[r] = static_cast<Index>(aggregated_.size());
+      aggregated_.push_back(r);
+    }
+  site_weight_.resize(aggregated_.size());
   graphs_[0] = model.volumes;
   const Index n0 = model.volumes.count();
   if (copies.size() != static_cast<std::size_t>(n0) * S_)
@@ -119,10 +124,12 @@ void EngineBase::layOut(Index replaced, const std::vector<int>& fresh) {
   computeHopRates();
 }
 
-double EngineBase::bindingWeightSum(Index h, Index r) const {
+void EngineBase::refreshBindingWeight(Index h, Index r) {
+  std::vector<double>& w = site_weight_[aggregated_slot_[r]];
+  if (w.size() != held_.values.size()) w.assign(held_.values.size(), 0.0);
   double sum = 0.0;
-  for (Index j : held_[h]) sum += bindingWeight(j, r);
-  return sum;
+  for (Index k = held_.start[h]; k < held_.start[h + 1]; ++k) sum += w[k] = bindingWeight(held_.values[k], r);
+  binding_weight_[static_cast<std::size_t>(h) * R_ + r] = sum;
 }
 
 void EngineBase::refreshBindingWeights(Index h) {
@@ -133,19 +140,14 @@ void EngineBase::refreshBindingWeights(Index h) {
 }
 
 Index EngineBase::drawBindingSite(Index h, Index r) {
-  // The weights once, summed in bindingWeightSum's order (the same sum to the bit).
-  const auto& sites = held_[h];
-  site_weights_.resize(sites.size());
-  double sum = 0.0;
-  for (std::size_t k = 0; k < sites.size(); ++k) sum += site_weights_[k] = bindingWeight(sites[k], r);
-  double x = rng_.uniform() * sum;
+  const std::vector<double>& w = site_weight_[aggregated_slot_[r]];
+  double x = rng_.uniform() * binding_weight_[static_cast<std::size_t>(h) * R_ + r];
   Index last = -1;
-  for (std::size_t k = 0; k < sites.size(); ++k) {
-    const double w = site_weights_[k];
-    if (!(w > 0.0)) continue;
-    last = sites[k];
-    if (x < w) return last;
-    x -= w;
+  for (Index k = held_.start[h]; k < held_.start[h + 1]; ++k) {
+    if (!(w[k] > 0.0)) continue;
+    last = held_.values[k];
+    if (x < w[k]) return last;
+    x -= w[k];
   }
   return last;  // rounding at the end
 }

@@ -76,17 +76,15 @@ class EngineBase : public ChemistryEngine {
 
   // Aggregated reactions (ReactionNetwork::aggregated), carried by the 3D subvolume h
   // holding the surface subvolumes j where they fire: weight c_j (rate factor, constant,
-  // confinement scale); the sum over the subvolumes h holds, cached per (h, r) by
-  // refreshBindingWeights; h's propensity; and the subvolume where one fires, drawn ∝ c_j
-  // (−1 if every weight is 0).
+  // confinement scale); the weights of the subvolumes h holds and their sum, cached per
+  // (h, r) by refreshBindingWeight(s), which whatever changes a weight calls (a rate
+  // factor, a confinement, every subvolume at the start of an advance); h's propensity;
+  // and the subvolume where one fires, drawn ∝ c_j from the cache (−1 if every weight is 0).
   bool aggregated(Index r) const { return net_.aggregated[r] != 0; }
   double bindingWeight(Index j, Index r) const {
     return factor_[static_cast<std::size_t>(j) * R_ + r] * constantAt(j, r) * confinementScale(j, r);
   }
-  double bindingWeightSum(Index h, Index r) const;
-  void refreshBindingWeight(Index h, Index r) {
-    binding_weight_[static_cast<std::size_t>(h) * R_ + r] = bindingWeightSum(h, r);
-  }
+  void refreshBindingWeight(Index h, Index r);
   void refreshBindingWeights(Index h);
   double bindingPropensity(Index h, Index r) const {
     const int* n = &copies_[static_cast<std::size_t>(h) * S_];
@@ -239,7 +237,10 @@ class EngineBase : public ChemistryEngine {
   std::vector<std::vector<double>> drift_;
   std::vector<Index> aggregated_;       // the aggregated reactions
   std::vector<double> binding_weight_;  // [h * R + r] over the 3D subvolumes, for aggregated r
-  std::vector<double> site_weights_;   // drawBindingSite's scratch: the weights of one holder's sites
+  // Per aggregated reaction (its slot in aggregated_), c_j of every surface subvolume in
+  // held_'s order (held_.values): what the sums in binding_weight_ add up.
+  std::vector<std::vector<double>> site_weight_;
+  std::vector<Index> aggregated_slot_;  // per reaction: its index in aggregated_, or −1
   // Per species: its interaction (potential, self and pair per region-local subvolume and
   // edge; empty for none) and field R per region-local subvolume.
   std::vector<SurfaceInteraction> interaction_;
