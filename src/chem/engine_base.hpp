@@ -214,8 +214,19 @@ class EngineBase : public ChemistryEngine {
   double pairField(Index s, Index i) const;
   // a_j(m) of species s at region-local subvolume a (SurfaceInteraction::onsite).
   double arrivalEnergy(Index s, Index a, int m) const;
-  double interactionRate(Index s, Index i, Index e) const;
-  void computeInteractionRates(Index s, Index i);
+  // What the rates of interacting species s read, looked up once for the many edges a
+  // hop changes: its terms (indexed from its region's first subvolume and edge).
+  struct InteractionView {
+    const double *potential, *self, *pair, *field;
+    bool onsite;  // on-site energies (arrivalEnergy)
+    double diffusion;
+    Index species, first, first_edge;
+    bool exponential;
+  };
+  InteractionView interactionView(Index s) const;
+  double interactionRate(const InteractionView& w, Index i, Index e) const;
+  void computeInteractionRates(const InteractionView& w, Index i);
+  void computeInteractionRates(Index s, Index i) { computeInteractionRates(interactionView(s), i); }
   // Moves copies of s out of inactive subvolumes; marks the subvolumes touched.
   void relocate(Index s, std::vector<char>& dirty);
 

@@ -129,30 +129,35 @@ double EngineBase::pairField(Index s, Index i) const {
   return r;
 }
 
-double EngineBase::interactionRate(Index s, Index i, Index e) const {
+EngineBase::InteractionView EngineBase::interactionView(Index s) const {
   const SurfaceInteraction& k = interaction_[s];
   const Index first = region_start_[net_.speciesRegion[s]];
-  const Index a = i - first, b = edge_target_[e] - first;
-  const double* field = field_[s].data();
-  // The moving copy leaves its own field behind: − K_ik + K_ii.
-  double x = k.potential[b] - k.potential[a] + field[b] - field[a] - k.pair[e - edge_start_[first]] + k.self[a];
-  if (!k.onsite_start.empty()) {
-    const int n_from = copies_[static_cast<std::size_t>(i) * S_ + s];
-    const int n_to = copies_[static_cast<std::size_t>(edge_target_[e]) * S_ + s];
-    x += arrivalEnergy(s, b, n_to) - arrivalEnergy(s, a, std::max(n_from - 1, 0));
-  }
-  const double factor = k.scheme == DriftScheme::kExponential ? exponentialDrift(x) : linearDrift(x, -x);
-  return species_[s].diffusion / hop_length2_[e] * factor;
+  return {k.potential.data(), k.self.data(), k.pair.data(), field_[s].data(), !k.onsite_start.empty(),
+          species_[s].diffusion, s, first, edge_start_[first], k.scheme == DriftScheme::kExponential};
 }
 
-void EngineBase::computeInteractionRates(Index s, Index i) {
+double EngineBase::interactionRate(const InteractionView& w, Index i, Index e) const {
+  const Index j = edge_target_[e];
+  const Index a = i - w.first, b = j - w.first;
+  // The moving copy leaves its own field behind: − K_ik + K_ii.
+  double x = w.potential[b] - w.potential[a] + w.field[b] - w.field[a] - w.pair[e - w.first_edge] + w.self[a];
+  if (w.onsite) {
+    const int n_from = copies_[static_cast<std::size_t>(i) * S_ + w.species];
+    const int n_to = copies_[static_cast<std::size_t>(j) * S_ + w.species];
+    x += arrivalEnergy(w.species, b, n_to) - arrivalEnergy(w.species, a, std::max(n_from - 1, 0));
+  }
+  const double factor = w.exponential ? exponentialDrift(x) : linearDrift(x, -x);
+  return w.diffusion / hop_length2_[e] * factor;
+}
+
+void EngineBase::computeInteractionRates(const InteractionView& w, Index i) {
   double total = 0.0;
   for (Index e = edge_start_[i]; e < edge_start_[i + 1]; ++e) {
-    const double rate = interactionRate(s, i, e);
-    edge_rate_[static_cast<std::size_t>(e) * S_ + s] = rate;
+    const double rate = interactionRate(w, i, e);
+    edge_rate_[static_cast<std::size_t>(e) * S_ + w.species] = rate;
     total += rate;
   }
-  hop_out_[static_cast<std::size_t>(i) * S_ + s] = total;
+  hop_out_[static_cast<std::size_t>(i) * S_ + w.species] = total;
 }
 
 // R changes at a, b and their neighbours (K has the graph's sparsity), for s and for the
@@ -185,13 +190,14 @@ const std::vector<Index>& EngineBase::interactionChanged(Index s, Index a, Index
   const Index first = region_start_[net_.speciesRegion[s]];
   auto update = [&](Index u) {
     for (Index v : near_) field_[u][v - first] = pairField(u, v);
-    for (Index v : near_) computeInteractionRates(u, v);
+    const InteractionView w = interactionView(u);
+    for (Index v : near_) computeInteractionRates(w, v);
     for (auto k = near_.size(); k < reach_.size(); ++k) {
       const Index v = reach_[k];
       double total = 0.0;
       for (Index e = edge_start_[v]; e < edge_start_[v + 1]; ++e) {
         double& rate = edge_rate_[static_cast<std::size_t>(e) * S_ + u];
-        if (mark_[edge_target_[e]] == near_mark) rate = interactionRate(u, v, e);
+        if (mark_[edge_target_[e]] == near_mark) rate = interactionRate(w, v, e);
         total += rate;
       }
       hop_out_[static_cast<std::size_t>(v) * S_ + u] = total;
