@@ -17,8 +17,9 @@ enum class DriftScheme { kExponential, kLinear };
 // B(x), evaluated without expm1, which took 40% of a phase-separation run
 // (examples/membrane_llps.toml): for |x| < 1/2 by its Taylor series Σ B_n xⁿ/n! with
 // the Bernoulli numbers B_n up to x¹⁴ (the first term left out is below 10⁻¹⁷), beyond
-// as x / (eˣ − 1) with exp, whose rounding eˣ − 1 ≥ 0.39 in size amplifies at most
-// 2.6-fold. Within 4 ulp of the exact value either way (tests/chem/test_hop_drift.cpp).
+// as x / (eˣ − 1) with exp: there |eˣ − 1| ≥ 0.39, so exp's rounding grows at most
+// 2.6-fold in the difference. Within 4 ulp of the exact value either way
+// (tests/chem/test_hop_drift.cpp).
 inline double exponentialDrift(double x) {
   if (std::abs(x) < 0.5) {
     const double y = x * x;
