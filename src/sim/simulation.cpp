@@ -311,15 +311,11 @@ void Simulation::checkCrossings(const char* when) const {
 void Simulation::checkMembranesApart() const {
   // Membranes do not push on each other: one moved through another (a vesicle swelling
   // into its neighbour) is no state the model describes, and stops the run.
-  const auto& membranes = system_.membranes();
-  for (std::size_t i = 0; i < membranes.size(); ++i)
-    for (std::size_t j = i + 1; j < membranes.size(); ++j)
-      if (const auto where = findMembranesCrossing(*membranes[i], *membranes[j]))
-        throw RunError(fmt::format("t = {:.6g} s, after the relaxation: membranes \"{}\" and \"{}\" pass through "
-                                   "each other ({}); "
-                                   "membranes do not push on each other in cortex, so nothing keeps them apart: "
-                                   "start them farther apart or change what drives them together",
-                                   system_.time(), membranes[i]->name(), membranes[j]->name(), *where));
+  if (const auto c = findCrossingMembranes(system_.membranes()))
+    throw RunError(fmt::format("t = {:.6g} s, after the relaxation: membranes \"{}\" and \"{}\" pass through each "
+                               "other ({}); membranes do not push on each other in cortex, so nothing keeps them "
+                               "apart: start them farther apart or change what drives them together",
+                               system_.time(), c->a->name(), c->b->name(), c->where));
 }
 
 // A minimizer that met a non-finite energy knows only the total: name the terms that are

@@ -103,13 +103,11 @@ System::System(const Config& config, const SystemState* restored) {
 
   // Membranes do not interact: two that pass through each other would overlap their
   // insides (confined species in both) for the whole run. Checked at the start only.
-  for (std::size_t i = 0; i < membranes_.size(); ++i)
-    for (std::size_t j = i + 1; j < membranes_.size(); ++j)
-      if (const auto where = findMembranesCrossing(*membranes_[i], *membranes_[j]))
-        throw InputError(fmt::format("{}: at the start, membranes \"{}\" and \"{}\" pass through each other ({}): "
-                                     "membranes do not push on each other in cortex, so they must start apart, one "
-                                     "inside the other or side by side",
-                                     config.source, membranes_[i]->name(), membranes_[j]->name(), *where));
+  if (const auto c = findCrossingMembranes(membranes_))
+    throw InputError(fmt::format("{}: at the start, membranes \"{}\" and \"{}\" pass through each other ({}): "
+                                 "membranes do not push on each other in cortex, so they must start apart, one inside "
+                                 "the other or side by side",
+                                 config.source, c->a->name(), c->b->name(), c->where));
   for (const MembraneBeadExclusion* term : coupling_terms_)
     if (const auto crossing = findMembraneCrossing(term->membrane(), term->network()))
       throw InputError(fmt::format("{}: at the start, {}: place the filaments on one side of it", config.source,
