@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "core/constants.hpp"
@@ -34,6 +35,27 @@ Membrane::Membrane(std::string name, SurfaceMesh mesh, MembraneMechanics mechani
   material_.initial_area = g.area;
   material_.initial_volume = g.volume;
   material_.vertex_area0 = g.vertex_area;
+  checkVolumeTarget(where);
+}
+
+// With the area held exactly, a target volume above the sphere's of that area is out of
+// reach; the relaxation would hold the sphere instead and report it as a result. Checked
+// at every knot of the two schedules (both are linear between knots, and the sphere's
+// volume is convex in the area, so a violation between knots shows at one of them).
+void Membrane::checkVolumeTarget(const std::string& where) const {
+  const VolumeParameters& v = mechanics_.volume;
+  if (mechanics_.area.model != AreaModel::kExact || !v.target_volume.isSet()) return;
+  std::vector<double> times{0.0};
+  for (const auto& [t, value] : v.target_volume.points()) times.push_back(t);
+  for (const auto& [t, value] : mechanics_.target_area.points()) times.push_back(t);
+  for (double t : times) {
+    const double area = targetArea(t), sphere = sphereVolumeOfArea(area), target = targetVolume(t);
+    if (target > sphere * (1.0 + 1e-9))
+      throw InputError(fmt::format("{}: target_volume = {:g} nm^3 at t = {:g} s is more than a closed surface of its "
+                                   "held area {:g} nm^2 can enclose (a sphere: {:g} nm^3; reduced volume {:.4g} > 1)",
+                                   where.empty() ? "membrane \"" + name_ + "\"" : where, target, t, area, sphere,
+                                   target / sphere));
+  }
 }
 
 void Membrane::gather(double* x) const {

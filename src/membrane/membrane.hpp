@@ -128,6 +128,10 @@ class Membrane final : public Body {
   // the sphere of the target area, else the initial volume.
   double targetVolume(double t) const;
 
+  // InputError when, with the area held exactly, target_volume asks for more than the
+  // sphere of the target area encloses.
+  void checkVolumeTarget(const std::string& where) const;
+
   RelaxationMetric& relaxationMetric() { return relaxation_metric_; }
   const RelaxationMetric& relaxationMetric() const { return relaxation_metric_; }
   const MembraneEquilibrium& equilibrium() const { return equilibrium_; }

@@ -36,15 +36,32 @@ const Eigen::VectorXd& NormalDisplacementProblem::positionsAt(const Eigen::Vecto
 }
 
 double NormalDisplacementProblem::fullValueAndGradient(const Eigen::VectorXd& u) {
-  const ScopedTimer timer{force_seconds};
   positionsAt(u);
+  evaluated_u_ = u;
+  if (memo_ && memo_->valid && memo_->connectivity == m_.connectivityVersion() &&
+      memo_->x.size() == x_.size() && memo_->x == x_) {
+    grad3_ = memo_->gradient;
+    evaluated_version_ = memo_->version;
+    return evaluated_energy_ = memo_->energy;
+  }
+  const ScopedTimer timer{force_seconds};
+  ++evaluations;
   grad3_.setZero();
   const Evaluation e{x_.data(), grad3_.data(), field_.newVersion(), &m_, held_};
-  evaluated_u_ = u;
   evaluated_version_ = e.version;
   double total = 0.0;
   for (EnergyTerm* t : terms_) total += t->evaluate(e);
-  return total;
+  return evaluated_energy_ = total;
+}
+
+void NormalDisplacementProblem::remember(const Eigen::VectorXd& u) {
+  if (!memo_ || evaluated_u_.size() != u.size() || evaluated_u_ != u) return;
+  memo_->valid = true;
+  memo_->connectivity = m_.connectivityVersion();
+  memo_->version = evaluated_version_;
+  memo_->x = positionsAt(u);
+  memo_->gradient = grad3_;
+  memo_->energy = evaluated_energy_;
 }
 
 double NormalDisplacementProblem::valueAndGradient(const Eigen::VectorXd& u, Eigen::VectorXd& g) {

@@ -17,6 +17,18 @@
 
 namespace cortex {
 
+// One evaluation of a membrane's terms kept for the next problem of the same relaxation:
+// an outer step starts where the last one ended, and the final report evaluates there
+// again, each at the same positions with the other bodies held where they were. Valid
+// for one relaxation only (between relaxations the other bodies and the time move).
+struct EvaluationMemo {
+  bool valid = false;
+  std::uint64_t connectivity = 0;  // Membrane::connectivityVersion() (a flip keeps the positions)
+  std::uint64_t version = 0;       // Evaluation::version, for the membrane's cached geometry
+  Eigen::VectorXd x, gradient;     // positions and full gradient, 3 per vertex
+  double energy = 0.0;
+};
+
 class NormalDisplacementProblem final : public ConstrainedProblem {
  public:
   // `kept_columns`: where P^-1 of the rigid rows is kept between outer steps (optional).
@@ -29,6 +41,16 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   // Constraint targets (intermediate ones during continuation).
   double area_target = 0.0, volume_target = 0.0;
   double force_seconds = 0.0, solve_seconds = 0.0;
+  long evaluations = 0;  // of the terms; an evaluation served by the memo is not one
+
+  // An evaluation at bit-identical positions on the same connectivity is served from
+  // `memo` instead of the terms (bit-identical, as the terms are pure functions of the
+  // positions while the other bodies are held).
+  void useMemo(EvaluationMemo* memo) { memo_ = memo; }
+  // Keeps the last evaluation in the memo if it was at u.
+  void remember(const Eigen::VectorXd& u);
+  // Evaluation::version of the last evaluation (Membrane::cachedGeometry).
+  std::uint64_t evaluatedVersion() const { return evaluated_version_; }
 
   Index size() const override { return static_cast<Index>(normals_.size()); }
   int numConstraints() const override { return int(exact_area_) + int(exact_volume_) + static_cast<int>(rigid_.rows()); }
@@ -66,6 +88,8 @@ class NormalDisplacementProblem final : public ConstrainedProblem {
   Eigen::VectorXd x0_, x_, grad3_;
   Eigen::VectorXd evaluated_u_;  // where the last energy evaluation was, and its version
   std::uint64_t evaluated_version_ = 0;
+  double evaluated_energy_ = 0.0;
+  EvaluationMemo* memo_ = nullptr;
   std::uint64_t held_;  // Evaluation::held of every evaluation
   std::vector<Vec3> normals_, face_normal0_;
   std::vector<char> fixed_;

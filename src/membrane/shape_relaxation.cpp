@@ -18,6 +18,7 @@
 #include "membrane/sobolev_preconditioner.hpp"
 #include "membrane/volume_energy.hpp"
 #include "mesh/mesh_quality.hpp"
+#include "mesh/vertex_normals.hpp"
 
 namespace cortex {
 namespace {
@@ -85,6 +86,37 @@ Eigen::VectorXd strainScale(const MeshGeometry& g, double radius) {
   return k;
 }
 
+// Before a near-sphere (reduced volume over kNearSphere) is deflated: a small
+// axisymmetric ellipsoidal mode, x_v += ε R P2(â·r̂_v) n̂_v along a fixed axis â of no
+// symmetry of a regular mesh. From a sphere the area and volume gradients are parallel,
+// and the deflation follows whatever the mesh's irregularity favours: on an icosphere its
+// icosahedral pattern, which the relaxation, keeping the symmetry, carried into an
+// icosahedrally buckled stationary shape at about twice the energy of the prolate
+// minimum (2.3-2.4 × 8πκ at v = 0.9, exit 0). The mode is the one the deflated sphere's
+// lowest shapes grow from (Seifert, Berndl & Lipowsky 1991); it only starts the path, and
+// the relaxation then goes to the equilibrium (docs/membrane.md).
+constexpr double kNearSphere = 0.995;
+constexpr double kKickAmplitude = 0.02;  // ε, of R = sqrt(A/4π)
+
+void breakSphericalSymmetry(Membrane& m) {
+  const MeshGeometry g = m.currentGeometry();
+  const double radius = std::sqrt(g.area / (4.0 * constants::kPi));
+  const Vec3 axis = Vec3(1.0, 2.0, 3.0).normalized();
+  const std::vector<Vec3> normals = vertexNormals(m.mesh());
+  std::vector<Vec3>& x = m.mesh().positions();
+  Vec3 centroid = Vec3::Zero();
+  for (std::size_t v = 0; v < x.size(); ++v) centroid += g.vertex_area[v] * x[v];
+  centroid /= g.area;
+  std::vector<Vec3> moved = x;
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    if (m.fixedVertices()[v]) continue;
+    const Vec3 r = x[v] - centroid;
+    const double c = r.norm() > 0 ? axis.dot(r) / r.norm() : 0.0;
+    moved[v] += kKickAmplitude * radius * 0.5 * (3.0 * c * c - 1.0) * normals[v];
+  }
+  x = moved;
+}
+
 }  // namespace
 
 double naturalForceTolerance(const Membrane& m, double t) {
@@ -110,6 +142,15 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   const bool sphere_by_area =
       exact_area && m.targetVolume(t) >= sphereVolumeOfArea(m.targetArea(t)) * (1.0 - 1e-12);
   const bool exact_volume = closed && m.mechanics().volume.exact && !sphere_by_area;
+  if (exact_volume) {
+    const MeshGeometry g = m.currentGeometry();
+    const double v0 = g.volume / sphereVolumeOfArea(g.area);
+    if (v0 > kNearSphere && m.targetVolume(t) / sphereVolumeOfArea(m.targetArea(t)) < v0 - 1e-3) {
+      breakSphericalSymmetry(m);
+      spdlog::debug("membrane \"{}\": deflated from a near-sphere (reduced volume {:.6g}): started along a {:g} R "
+                    "ellipsoidal mode to break the mesh's symmetry", m.name(), v0, kKickAmplitude);
+    }
+  }
   const std::vector<EnergyTerm*> terms = field.termsOf(m.name());
   const TermScales scales = scalesOf(m, terms);
   const double area_target = m.targetArea(t), volume_target = closed ? m.targetVolume(t) : 0.0;
@@ -124,6 +165,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   LbfgsMemory& memory = warm.memory;
   SobolevPreconditioner& precond = warm.preconditioner;
   const long solves_before = precond.solves();
+  EvaluationMemo memo;  // the last evaluation of each outer step, for the next one and the report
 
   double continuation = 1.0;  // fraction of the way from the current area and volume to the targets
   for (rep.outer = 0; rep.outer < kMaxOuter; ++rep.outer) {
@@ -151,6 +193,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       warm.connectivity = m.connectivityVersion();
     }
     NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, precond, &warm);
+    problem.useMemo(&memo);
     if (scales.area_stiffness > 0 || (closed && scales.volume_stiffness > 0)) {
       // Stiff global penalties, k/X0 ∇X ∇Xᵀ, as an exact low-rank part of the metric.
       Eigen::VectorXd c;
@@ -190,7 +233,6 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
       if (last.stop_reason != kInfeasibleStart || continuation < 1.0 / 1024) break;
       continuation *= 0.25;
       ++rep.continuation_steps;
-      rep.force_evaluations += last.evaluations;
       rep.constraint_evaluations += last.constraint_evaluations;
       u.setZero();
       memory.clear();
@@ -200,10 +242,11 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     continuation = std::min(1.0, 4.0 * continuation);
     rep.iterations += last.iterations;
     iterations_left -= last.iterations;
-    rep.force_evaluations += last.evaluations;
+    rep.force_evaluations += problem.evaluations;
     rep.constraint_evaluations += last.constraint_evaluations;
     rep.force_seconds += problem.force_seconds;
     rep.solve_seconds += problem.solve_seconds;
+    problem.remember(u);
     const Eigen::VectorXd& x = problem.positionsAt(u);
     for (Index v = 0; v < n; ++v) m.mesh().positions()[v] = x.segment<3>(3 * v);
     const double moved = u.size() ? u.cwiseProduct(inner.move_scale).cwiseAbs().maxCoeff() : 0.0;
@@ -261,12 +304,16 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   {
     SobolevPreconditioner unused;
     NormalDisplacementProblem problem(m, field, terms, exact_area, exact_volume, unused);
+    problem.useMemo(&memo);  // where the last outer step ended, unless the mesh changed since
     const Index n = m.mesh().numVertices();
     const Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
     Eigen::VectorXd g;
     rep.energy = problem.valueAndGradient(u, g);
-    ++rep.force_evaluations;
-    const MeshGeometry geo = m.currentGeometry();
+    rep.force_evaluations += problem.evaluations;
+    rep.force_seconds += problem.force_seconds;
+    // The evaluation's own geometry, if the membrane still holds it: the same positions.
+    const MeshGeometry* evaluated = m.cachedGeometry(problem.evaluatedVersion());
+    const MeshGeometry geo = evaluated ? *evaluated : m.currentGeometry();
     // The multipliers of the last iterate (the minimizer's, in the Sobolev metric), else
     // least squares on the normal components.
     const int nc = int(exact_area) + int(exact_volume);

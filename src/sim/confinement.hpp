@@ -33,9 +33,9 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
 // (10-50%) it throws InputError instead.
 void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config);
 
-// A reaction of membrane species with 3D species needs a vertex of its membrane inside
-// the compartment grid (each vertex reacts with the compartment holding it; clamped into
-// the grid, one far outside reacted with a compartment far away). And if its 3D species
+// A reaction of membrane species with 3D species needs its membrane within the
+// compartment grid (each vertex reacts with the compartment holding it; clamped into the
+// grid, one outside reacts with the grid's edge, while no volume beyond it holds species). And if its 3D species
 // are confined to a side of another membrane, it fires only at the vertices on that side.
 // Throws InputError (naming the reaction) when no vertex lies there: it could never fire, and a run
 // would report zero events as if that were the rate's doing. Nested vesicles pass (the

@@ -93,6 +93,11 @@ TEST_F(CliErrors, OutOfRangeIsNamed) {
   expectInputError(check(configWith("radius = 200.0\nmesh_size = 400.0\n")), {"membrane.0.mesh_size"});
   expectInputError(check(configWith(kSphere + "bending_modulus = -1.0\n")), {"membrane.0.bending_modulus"});
   expectInputError(check(configWith(kSphere + "reduced_volume = 1.5\n")), {"membrane.0.reduced_volume"});
+  // The same as a volume: more than the sphere of the held area (R = 200 nm: 3.35e7 nm^3)
+  // encloses, also when a schedule gets there later. It was held as the sphere, exit 0.
+  expectInputError(check(configWith(kSphere + "target_volume = 4.0e7\n")), {"membrane \"", "target_volume", "> 1"});
+  expectInputError(check(configWith(kSphere + "target_volume = [[0.0, 3.0e7], [1.0, 3.5e7]]\n")),
+                   {"target_volume", "t = 1 s"});
   expectInputError(check("[[membrane]]\nshape = \"cube\"\n" + kSphere), {"membrane.0.shape", "cube"});
 }
 
