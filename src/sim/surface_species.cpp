@@ -61,8 +61,13 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
     std::vector<std::string> names;
     std::vector<std::vector<int>> copies;
     std::vector<double> covered(static_cast<std::size_t>(n), 0.0);  // nm² per vertex, by the species placed so far
-    for (const SurfaceSpeciesConfig& s : mc.species) {
-      const std::string where = fmt::format("{}: membrane \"{}\", species \"{}\"", source, mc.name, s.name);
+    for (std::size_t j = 0; j < mc.species.size(); ++j) {
+      const SurfaceSpeciesConfig& s = mc.species[j];
+      // The key at fault, dotted as the config reader names keys, and whose it is.
+      const auto where = [&](const char* key) {
+        return fmt::format("{}: membrane.{}.species.{}.{} (species \"{}\" of membrane \"{}\")", source, m, j, key,
+                           s.name, mc.name);
+      };
       // Weights: the dual-cell areas of the vertices where copies may start.
       std::vector<char> inside(static_cast<std::size_t>(n));
       double sum = 0.0;
@@ -70,11 +75,12 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         inside[v] = !s.region || s.region->contains(membrane.mesh().positions()[v]);
         if (inside[v]) sum += area[v];
       }
-      if (!(sum > 0.0)) throw InputError(fmt::format("{}: region holds no vertex of the membrane", where));
+      if (!(sum > 0.0)) throw InputError(where("region") + ": holds no vertex of the membrane");
       std::int64_t count = s.copies;
       if (s.density) {
         const double expected = *s.density * sum * 1e-6;  // copies/µm^2 × nm^2
-        if (!(expected <= 2e9)) throw InputError(fmt::format("{}: density gives {:.3g} copies, more than 2e9", where, expected));
+        if (!(expected <= 2e9))
+          throw InputError(fmt::format("{}: gives {:.3g} copies, more than 2e9", where("density"), expected));
         count = std::llround(expected);
       }
       // Proteins that sense or make curvature cover A_p each; more of them than the whole
@@ -85,7 +91,7 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
         if (static_cast<double>(count) * s.curvature->area > membrane_area)
           throw InputError(fmt::format("{}: {} copies of area {:g} nm^2 (curvature.area) would cover {:.3g} times "
                                        "the membrane's {:.6g} nm^2; give fewer copies or a lower density",
-                                       where, count, s.curvature->area,
+                                       where(s.density ? "density" : "copies"), count, s.curvature->area,
                                        static_cast<double>(count) * s.curvature->area / membrane_area, membrane_area));
       }
       // With a footprint, the copies of all such species share a vertex's area as the
@@ -99,7 +105,7 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
           throw InputError(fmt::format("{}: footprint {:g} nm^2 exceeds the room of every vertex (at most {:.4g} "
                                        "nm^2, about 0.87 mesh_size²): no copy could ever sit on the membrane; "
                                        "a copy must fit in a vertex's cell",
-                                       where, s.footprint, largest));
+                                       where("footprint"), s.footprint, largest));
       }
       std::vector<std::int64_t> room(static_cast<std::size_t>(n), 0);
       double places = 0.0;
@@ -117,7 +123,7 @@ void placeSurfaceSpecies(const std::vector<MembraneConfig>& configs, std::vector
       if (s.footprint > 0.0 && static_cast<double>(count) > 0.99 * places)
         throw InputError(fmt::format("{}: {} copies do not fit on the {:.0f} places of footprint {:g} nm^2 "
                                      "left by the species before it (keep them under 99% full)",
-                                     where, count, places, s.footprint));
+                                     where(s.density ? "density" : "copies"), count, places, s.footprint));
       std::vector<int> c = placeByArea(count, area, room, random);
       if (s.footprint > 0.0)
         for (Index v = 0; v < n; ++v) covered[v] += c[v] * s.footprint;

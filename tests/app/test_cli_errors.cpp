@@ -55,6 +55,19 @@ TEST_F(CliErrors, ValidConfigPasses) {
   EXPECT_NE(r.out.find("ok"), std::string::npos) << describe(r);
 }
 
+// A sphere meshed so coarsely that its bending energy is percents off is accepted (a
+// user's choice) but said so: mesh_size 0.72 R made a 14-vertex "sphere" 20% above 8πκ
+// without a word. R/5 (mean edge ~0.2 R, 0.5%) passes quietly.
+TEST_F(CliErrors, ACoarselyMeshedSphereIsWarnedOf) {
+  const RunResult coarse = check(configWith("radius = 500.0\nmesh_size = 360.0\n"));
+  EXPECT_EQ(coarse.exit_code, 0) << describe(coarse);
+  EXPECT_NE(coarse.err.find("mesh_size = 360 nm gives 14 vertices"), std::string::npos) << describe(coarse);
+  EXPECT_NE(coarse.err.find("off by percents"), std::string::npos) << describe(coarse);
+  const RunResult fine = check(configWith("radius = 500.0\nmesh_size = 100.0\n"));
+  EXPECT_EQ(fine.exit_code, 0) << describe(fine);
+  EXPECT_EQ(fine.err.find("off by percents"), std::string::npos) << describe(fine);
+}
+
 TEST_F(CliErrors, UnknownKeyIsNamed) {
   expectInputError(check(configWith(kSphere + "bending_modulu = 3.0\n")),
                    {"membrane.0.bending_modulu", "unknown key"});

@@ -140,8 +140,9 @@ TEST(MembraneSpeciesRun, BadMembraneSpeciesNameTheKey) {
   replaceOnce(empty, "min = [0.0, 0.0, 1400.0]", "min = [0.0, 0.0, 1700.0]");
   std::string dense = exampleText();
   replaceOnce(dense, "copies = 5000", "density = 1.0e12");
-  for (const auto& [text, words] : {std::pair{empty, "species \"P\": region holds no vertex"},
-                                    std::pair{dense, "species \"P\": density gives"}}) {
+  // Named as keys are (an audit found them naming only the membrane and species).
+  for (const auto& [text, words] : {std::pair{empty, "membrane.0.species.0.region (species \"P\""},
+                                    std::pair{dense, "membrane.0.species.0.density (species \"P\""}}) {
     TempDir dir;
     const RunResult r = runConfig(writeConfig(dir.path(), text), dir / "out", {}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << describe(r);
@@ -203,7 +204,7 @@ TEST(MembraneSpeciesRun, ImpossibleParametersAreInputErrorsInCheckAsInRun) {
                    "max_events_per_window", "a membrane species' energies multiply");
   // A footprint past every vertex's cell: no copy could ever sit there (with no initial
   // copies, binding onto the membrane was accepted and fired 0 times).
-  expectCheckFails(patchWith("footprint = 1.0e6\n"), "species \"P\"", "exceeds the room of every vertex");
+  expectCheckFails(patchWith("footprint = 1.0e6\n"), "species.0.footprint", "exceeds the room of every vertex");
   // A pair interaction's range far past the mesh speeds the hops up by e^{βΔV}: the
   // message names the energy, not only the diffusion constant (it blamed diffusion alone).
   expectCheckFails(patchWith("[membrane.species.interaction]\nheight = 0.2\nrange = 1000.0\n"),
