@@ -98,8 +98,8 @@ Eigen::VectorXd strainScale(const MeshGeometry& g, double radius) {
 constexpr double kNearSphere = 0.995;
 constexpr double kKickAmplitude = 0.02;  // ε, of R = sqrt(A/4π)
 
-void breakSphericalSymmetry(Membrane& m) {
-  const MeshGeometry g = m.currentGeometry();
+// g: the geometry at the membrane's positions.
+void breakSphericalSymmetry(Membrane& m, const MeshGeometry& g) {
   const double radius = std::sqrt(g.area / (4.0 * constants::kPi));
   const Vec3 axis = Vec3(1.0, 2.0, 3.0).normalized();
   const std::vector<Vec3> normals = vertexNormals(m.mesh());
@@ -107,14 +107,12 @@ void breakSphericalSymmetry(Membrane& m) {
   Vec3 centroid = Vec3::Zero();
   for (std::size_t v = 0; v < x.size(); ++v) centroid += g.vertex_area[v] * x[v];
   centroid /= g.area;
-  std::vector<Vec3> moved = x;
   for (std::size_t v = 0; v < x.size(); ++v) {
     if (m.fixedVertices()[v]) continue;
     const Vec3 r = x[v] - centroid;
     const double c = r.norm() > 0 ? axis.dot(r) / r.norm() : 0.0;
-    moved[v] += kKickAmplitude * radius * 0.5 * (3.0 * c * c - 1.0) * normals[v];
+    x[v] += kKickAmplitude * radius * 0.5 * (3.0 * c * c - 1.0) * normals[v];
   }
-  x = moved;
 }
 
 }  // namespace
@@ -146,7 +144,7 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
     const MeshGeometry g = m.currentGeometry();
     const double v0 = g.volume / sphereVolumeOfArea(g.area);
     if (v0 > kNearSphere && m.targetVolume(t) / sphereVolumeOfArea(m.targetArea(t)) < v0 - 1e-3) {
-      breakSphericalSymmetry(m);
+      breakSphericalSymmetry(m, g);
       spdlog::debug("membrane \"{}\": deflated from a near-sphere (reduced volume {:.6g}): started along a {:g} R "
                     "ellipsoidal mode to break the mesh's symmetry", m.name(), v0, kKickAmplitude);
     }

@@ -35,8 +35,9 @@ void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membra
 
 // A reaction of membrane species with 3D species needs its membrane within the
 // compartment grid (each vertex reacts with the compartment holding it; clamped into the
-// grid, one outside reacts with the grid's edge, while no volume beyond it holds species). And if its 3D species
-// are confined to a side of another membrane, it fires only at the vertices on that side.
+// grid, one outside reacts with the grid's edge, while no volume beyond it holds
+// species). And if its 3D species are confined to a side of another membrane, it fires
+// only at the vertices on that side.
 // Throws InputError (naming the reaction) when no vertex lies there: it could never fire, and a run
 // would report zero events as if that were the rate's doing. Nested vesicles pass (the
 // inner one's vertices are inside the outer one); a membrane's own sides always do.

@@ -82,14 +82,8 @@ TriangleSoup generatedMesh(const MembraneConfig& c, const std::string& where) {
 // mesh_size = 0.72 R was 20% off), which the log should say beside the numbers.
 constexpr double kCoarseEdge = 0.3;
 
-void warnIfCoarse(const Membrane& m, const MembraneConfig& c, const std::string& where) {
-  const SurfaceMesh& mesh = m.mesh();
-  const auto& x = mesh.positions();
-  double sum = 0.0;
-  Index edges = 0;
-  for (const Tri& t : m.topology().triangles)
-    for (int k = 0; k < 3; ++k) sum += (x[t[(k + 1) % 3]] - x[t[k]]).norm(), ++edges;
-  const double radius = c.radii.minCoeff(), ratio = edges > 0 ? sum / edges / radius : 0.0;
+void warnIfCoarse(const SurfaceMesh& mesh, const MembraneConfig& c, const std::string& where) {
+  const double radius = c.radii.minCoeff(), ratio = meanEdgeLength(mesh) / radius;
   if (!(ratio > kCoarseEdge)) return;
   spdlog::warn("{}: mesh_size = {:g} nm gives {} vertices with a mean edge of {:.2g} x its smallest radius ({:g} nm): "
                "the bending energy is then off by percents (at least about {:.0f}% on a sphere, docs/membrane.md, "
@@ -126,7 +120,7 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     reverseOrientation(soup);
     membrane = std::make_unique<Membrane>(c.name, SurfaceMesh::fromSoup(soup, mesh_source), c.mechanics, fixed, where);
   }
-  if (!restored && (c.shape == "sphere" || c.shape == "ellipsoid")) warnIfCoarse(*membrane, c, where);
+  if (!restored && (c.shape == "sphere" || c.shape == "ellipsoid")) warnIfCoarse(membrane->mesh(), c, where);
   if (restored) {
     membrane->setMaterial(restored->material);
     membrane->setRemeshTotals(restored->remesh_totals);

@@ -102,7 +102,8 @@ System::System(const Config& config, const SystemState* restored) {
   if (config.chemistry) buildChemistry(config, restored, filament_terms);
 
   // Membranes do not interact: two that pass through each other would overlap their
-  // insides (confined species in both) for the whole run. Checked at the start only.
+  // insides (confined species in both) for the whole run. Refused here; a run in which
+  // they come to meet stops (Simulation::checkMembranesApart).
   if (const auto c = findCrossingMembranes(membranes_))
     throw InputError(fmt::format("{}: at the start, membranes \"{}\" and \"{}\" pass through each other ({}): "
                                  "membranes do not push on each other in cortex, so they must start apart, one inside "
