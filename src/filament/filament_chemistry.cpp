@@ -92,6 +92,11 @@ void FilamentChemistry::addReactions(ChemistryModel& model) {
   candidates_.assign(channels_.size(), BindingCandidates{});
 }
 
+void FilamentChemistry::setNucleationSide(Index type, Side side) {
+  if (static_cast<std::size_t>(type) >= nucleation_side_.size()) nucleation_side_.resize(type + 1);
+  nucleation_side_[type] = std::move(side);
+}
+
 void FilamentChemistry::attach(ChemistryEngine& engine) {
   factors_ = engine.claimRateFactors(range_);
   engine.setReactionHook(range_, this);
@@ -193,12 +198,31 @@ void FilamentChemistry::loadEnd(Index i, bool plus_end, const Vec3& force) {
 // against a tensed patch by 20%), and it rises to the probe's when the end advances into
 // the membrane as it stood (which keeps a second growth step from carrying it through).
 void FilamentChemistry::reload(Index i, bool plus_end) {
-  if (!probe_ || static_cast<std::size_t>(i) >= relaxed_force_.size()) return;  // new filaments: unloaded
+  if (!probe_) return;
   const int e = plus_end ? 1 : 0;
-  const Vec3 probed = relaxed_force_[i][e] - probe_force_[i][e] + probe_->forceAt(i, endBead(i, plus_end), plus_end);
+  // A filament made since the last relaxation (a nucleus, a branch) has no relaxed load:
+  // the probe's alone. Unloaded, a nucleus formed beside a membrane grew through it
+  // within the window.
+  const bool relaxed = static_cast<std::size_t>(i) < relaxed_force_.size();
+  const Vec3 before = relaxed ? relaxed_force_[i][e] : Vec3::Zero();
+  const Vec3 probed =
+      before - (relaxed ? probe_force_[i][e] : Vec3::Zero()) + probe_->forceAt(i, endBead(i, plus_end), plus_end);
   const Filament& f = net_.filaments()[i];
   const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
-  loadEnd(i, plus_end, probed.dot(u) < relaxed_force_[i][e].dot(u) ? probed : relaxed_force_[i][e]);
+  loadEnd(i, plus_end, probed.dot(u) < before.dot(u) ? probed : before);
+}
+
+void FilamentChemistry::track(Index i) {
+  if (ratchet_.size() > static_cast<std::size_t>(i)) return;
+  ratchet_.resize(i + 1, {1.0, 1.0});  // unloaded until loaded (addNew) or relaxed
+  load_.resize(i + 1, {0.0, 0.0});
+}
+
+void FilamentChemistry::addNew(Index i) {
+  track(i);
+  reload(i, true);
+  if (net_.filaments()[i].minusEndActive()) reload(i, false);
+  contributeEnds(i, 1.0);
 }
 
 // Bound proteins fire in the compartment of their first site.
@@ -253,10 +277,7 @@ void FilamentChemistry::file(std::vector<Index>& bucket, Index i, double sign) {
 void FilamentChemistry::contributeEnds(Index i, double sign) {
   using K = FilamentReaction;
   const Filament& f = net_.filaments()[i];
-  if (ratchet_.size() <= static_cast<std::size_t>(i)) {
-    ratchet_.resize(i + 1, {1.0, 1.0});  // a new filament: unloaded until the next minimization
-    load_.resize(i + 1, {0.0, 0.0});
-  }
+  track(i);
   if (end_compartment_.size() <= static_cast<std::size_t>(i)) end_compartment_.resize(i + 1, {0, 0});
   // Adding (+1) records where the ends are now and files them in their compartments'
   // buckets; removing (-1) uses the record, so the two always cancel and picks (fireEnd)

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "chem/chemistry_engine.hpp"
@@ -57,6 +58,12 @@ class FilamentChemistry final : public ReactionHook {
   // growth or shrinkage of an end, its load becomes the last relaxation's with their
   // part replaced by what they put on the end where it now is. Null: none.
   void setEndLoadProbe(const EndLoadProbe* probe) { probe_ = probe; }
+  // Where the monomers of filament type `type` live, when a membrane confines them to one
+  // of its sides (true on that side): nuclei of the type then form there, at points drawn
+  // uniformly in the compartment's part on that side (the engine's propensity already
+  // counts the monomers' concentration in that part). Unset: anywhere in the compartment.
+  using Side = std::function<bool(const Vec3&)>;
+  void setNucleationSide(Index type, Side side);
 
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
   double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
@@ -84,6 +91,10 @@ class FilamentChemistry final : public ReactionHook {
   void loadEnd(Index f, bool plus_end, const Vec3& force);
   // The ratchet of filament f's end after an event moved it (setEndLoadProbe).
   void reload(Index f, bool plus_end);
+  // A filament just made (nucleus, branch): its ends loaded by the probe, then counted.
+  void addNew(Index f);
+  // Makes room for filament f's ratchet and load.
+  void track(Index f);
   const Vec3& endBead(Index f, bool plus_end) const {
     const Filament& fil = net_.filaments()[f];
     return plus_end ? fil.beads.back() : fil.beads.front();
@@ -116,6 +127,7 @@ class FilamentChemistry final : public ReactionHook {
   ReactionRange range_;  // its reactions in the model
   RateFactors factors_;  // and their rate factors in the engine (once attached)
   Walls walls_;  // where nuclei may form
+  std::vector<Side> nucleation_side_;  // per filament type, empty if unconfined
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none
   std::vector<Channel> channels_;

@@ -110,16 +110,27 @@ void FilamentChemistry::release(const std::vector<Release>& released, ChemistryE
 }
 
 bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream& random) {
+  // Draws until the dimer lies on its monomers' side of a confining membrane (uniform in
+  // that part of the compartment); past this many the compartment's part there is too
+  // small to find (under 1e-4 of it: then P(void) > 1/e) and the event is void.
+  constexpr int kMostDraws = 10'000;
   const FilamentType& t = net_.type(ch.type);
+  const Side* side = static_cast<std::size_t>(ch.type) < nucleation_side_.size() && nucleation_side_[ch.type]
+                         ? &nucleation_side_[ch.type]
+                         : nullptr;
   const auto ijk = grid_.coords(c);
   const Vec3 corner(ijk[0] * grid_.size, ijk[1] * grid_.size, ijk[2] * grid_.size);
-  const Vec3 at = corner + grid_.size * Vec3(random.uniform(), random.uniform(), random.uniform());
-  Filament f = makeStraightFilament(ch.type, at, uniformDirection(random), 2, t.cylinder_monomers, t.monomer_size);
-  // Nucleation happens only inside the boundary: thinning by the fraction of the
-  // compartment that lies inside.
-  if (!walls_.contains(f.beads.front()) || !walls_.contains(f.beads.back())) return false;
-  contributeEnds(net_.addFilament(std::move(f)), 1.0);
-  return true;
+  for (int draw = 0; draw < kMostDraws; ++draw) {
+    const Vec3 at = corner + grid_.size * Vec3(random.uniform(), random.uniform(), random.uniform());
+    Filament f = makeStraightFilament(ch.type, at, uniformDirection(random), 2, t.cylinder_monomers, t.monomer_size);
+    if (side && !((*side)(f.beads.front()) && (*side)(f.beads.back()))) continue;
+    // Nucleation happens only inside the boundary: thinning by the fraction of the
+    // compartment (or of its part on the monomers' side) that lies inside.
+    if (!walls_.contains(f.beads.front()) || !walls_.contains(f.beads.back())) return false;
+    addNew(net_.addFilament(std::move(f)));
+    return true;
+  }
+  return false;
 }
 
 bool FilamentChemistry::fireBind(const Channel& ch, Index c, RandomStream& random) {
@@ -208,7 +219,7 @@ bool FilamentChemistry::fireBranch(const Channel& ch, Index c, RandomStream& ran
   const double angle = net_.config().branchers[ch.type].angle * constants::kPi / 180.0;
   const Index daughter = net_.branch(ch.type, mother, site.site[0], std::cos(angle) * u + std::sin(angle) * v);
   net_.branches().back().compartment = c;
-  contributeEnds(daughter, 1.0);
+  addNew(daughter);
   contributeBranch(net_.branches().back(), 1.0);
   return true;
 }

@@ -122,8 +122,8 @@ void MembraneBeadExclusion::rebuild() {
             [](const Pair& x, const Pair& y) { return x.face != y.face ? x.face < y.face : x.bead < y.bead; });
 }
 
-MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b,
-                                                                   const Vec3& c, bool gradient) const {
+MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(
+    const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, std::optional<InverseFourthGradient> gradient) const {
   PairEnergy out;
   const double k = params_.stiffness, cutoff = params_.cutoff, fade_start = kFadeStart * cutoff;
   const TrianglePoint nearest = closestPointOnTriangle(p, a, b, c);
@@ -142,13 +142,14 @@ MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(const Vec3& 
     out.energy = k * fade * triangleInverseFourth(p, a, b, c);
     return out;
   }
-  const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c);
+  const TriangleInverseFourth r = triangleInverseFourthWithGradient(p, a, b, c, *gradient);
   out.energy = k * fade * r.value;
   if (!std::isfinite(r.value)) return out;
   // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
   const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
-  out.d_point = k * fade * r.d_point + away;
-  for (int v = 0; v < 3; ++v) out.d_vertices[v] = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
+  if (*gradient != InverseFourthGradient::kVertices) out.d_point = k * fade * r.d_point + away;
+  if (*gradient != InverseFourthGradient::kPoint)
+    for (int v = 0; v < 3; ++v) out.d_vertices[v] = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
   return out;
 }
 
@@ -161,7 +162,7 @@ Vec3 MembraneBeadExclusion::forceAt(const Vec3& p, const TriangleCells& held) co
   Vec3 force = Vec3::Zero();
   for (Index f : faces) {
     const Tri& t = triangles[f];
-    const PairEnergy pe = pairEnergy(p, x[t[0]], x[t[1]], x[t[2]], true);
+    const PairEnergy pe = pairEnergy(p, x[t[0]], x[t[1]], x[t[2]], InverseFourthGradient::kPoint);
     if (pe.active) force -= pe.d_point;
   }
   return force;
@@ -201,13 +202,18 @@ double MembraneBeadExclusion::evaluate(const Evaluation& e) {
   if (crossesSinceHeld(e)) return std::numeric_limits<double>::infinity();
   double* vertex_gradient = e.gradient && e.moves(membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
   double* bead_gradient = e.gradient && e.moves(network_) ? e.gradient + 3 * network_.offset() : nullptr;
+  // Derivatives only along what moves: a filament relaxation under a held membrane needs
+  // the beads' (3 directions of the kernel's automatic differentiation instead of 12).
+  std::optional<InverseFourthGradient> gradient;
+  if (bead_gradient && vertex_gradient) gradient = InverseFourthGradient::kBoth;
+  else if (bead_gradient) gradient = InverseFourthGradient::kPoint;
+  else if (vertex_gradient) gradient = InverseFourthGradient::kVertices;
   const auto& triangles = membrane_.topology().triangles;
   double energy = 0.0;
   active_pairs_ = 0;
   for (const Pair& pair : pairs_) {
     const Tri& t = triangles[pair.face];
-    const PairEnergy pe = pairEnergy(bead_x_[pair.bead], vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]],
-                                     e.gradient != nullptr);
+    const PairEnergy pe = pairEnergy(bead_x_[pair.bead], vertex_x_[t[0]], vertex_x_[t[1]], vertex_x_[t[2]], gradient);
     if (!pe.active) continue;
     ++active_pairs_;
     if (!std::isfinite(pe.energy)) return std::numeric_limits<double>::infinity();

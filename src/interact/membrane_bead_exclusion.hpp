@@ -30,11 +30,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "filament/filament_network.hpp"
 #include "interact/triangle_cells.hpp"
+#include "interact/triangle_inverse_fourth.hpp"
 #include "mech/energy_term.hpp"
 #include "membrane/membrane.hpp"
 
@@ -77,14 +79,16 @@ class MembraneBeadExclusion final : public EnergyTerm {
     Index face, bead;  // bead: index into beads_ (the selected beads)
   };
   // One bead and one triangle: inactive beyond the cut-off; the energy (pN·nm, infinite
-  // on the triangle) and, if asked, its gradient on the bead and the three vertices.
+  // on the triangle) and, if asked (`gradient`), its gradient on the bead and/or the three
+  // vertices (the others stay zero).
   struct PairEnergy {
     bool active = false;
     double energy = 0.0;
     Vec3 d_point = Vec3::Zero();
     std::array<Vec3, 3> d_vertices{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   };
-  PairEnergy pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, bool gradient) const;
+  PairEnergy pairEnergy(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                        std::optional<InverseFourthGradient> gradient) const;
   // Positions of the vertices and selected beads at e (from e or from the bodies; what
   // was read from a body is kept while e.held stays the same).
   void gatherPositions(const Evaluation& e);

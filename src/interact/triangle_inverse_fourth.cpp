@@ -109,18 +109,42 @@ double triangleInverseFourth(const Vec3& p, const Vec3& a, const Vec3& b, const 
   return integral<double>(p, a, b, c);
 }
 
-TriangleInverseFourth triangleInverseFourthWithGradient(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  using Scalar = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
-  std::array<V3<Scalar>, 4> x;
+namespace {
+
+// integral<> differentiated along `Directions` variables: the point's coordinates (3) or
+// the vertices' (9); the others enter as constants.
+template <int Directions>
+Eigen::AutoDiffScalar<Eigen::Matrix<double, Directions, 1>> differentiated(const Vec3& p, const Vec3& a,
+                                                                            const Vec3& b, const Vec3& c) {
+  using Scalar = Eigen::AutoDiffScalar<Eigen::Matrix<double, Directions, 1>>;
   const std::array<const Vec3*, 4> input{&p, &a, &b, &c};
+  const int first_variable = Directions == 3 ? 0 : 1;  // the point, or the vertices
+  std::array<V3<Scalar>, 4> x;
   for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < 3; ++j) x[k][j] = Scalar((*input[k])[j], 12, 3 * k + j);
-  const Scalar value = integral<Scalar>(x[0], x[1], x[2], x[3]);
+    for (int j = 0; j < 3; ++j)
+      x[k][j] = k >= first_variable && k < first_variable + Directions / 3
+                    ? Scalar((*input[k])[j], Directions, 3 * (k - first_variable) + j)
+                    : Scalar((*input[k])[j], Eigen::Matrix<double, Directions, 1>::Zero());
+  return integral<Scalar>(x[0], x[1], x[2], x[3]);
+}
+
+}  // namespace
+
+TriangleInverseFourth triangleInverseFourthWithGradient(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                                                        InverseFourthGradient which) {
   TriangleInverseFourth out;
-  out.value = value.value();
-  if (!std::isfinite(out.value) || value.derivatives().size() != 12) return out;
-  out.d_point = value.derivatives().segment<3>(0);
-  for (int k = 0; k < 3; ++k) out.d_vertices[k] = value.derivatives().segment<3>(3 + 3 * k);
+  if (which != InverseFourthGradient::kVertices) {
+    const auto value = differentiated<3>(p, a, b, c);
+    out.value = value.value();
+    if (!std::isfinite(out.value)) return out;
+    out.d_point = value.derivatives();
+  }
+  if (which != InverseFourthGradient::kPoint) {
+    const auto value = differentiated<9>(p, a, b, c);
+    out.value = value.value();
+    if (!std::isfinite(out.value)) return out;
+    for (int k = 0; k < 3; ++k) out.d_vertices[k] = value.derivatives().template segment<3>(3 * k);
+  }
   return out;
 }
 

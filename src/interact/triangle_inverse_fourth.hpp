@@ -28,7 +28,8 @@
 // there is infinite, and callers back off.
 //
 // Gradients: forward-mode automatic differentiation of the same expressions (Eigen's
-// AutoDiffScalar), exact to rounding and checked against central differences in tests.
+// AutoDiffScalar) in as many directions as asked for, exact to rounding and checked
+// against central differences in tests.
 #pragma once
 
 #include <array>
@@ -45,6 +46,14 @@ struct TriangleInverseFourth {
   Vec3 d_point = Vec3::Zero();                              // ∂/∂p
   std::array<Vec3, 3> d_vertices{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};  // ∂/∂a, ∂/∂b, ∂/∂c
 };
-TriangleInverseFourth triangleInverseFourthWithGradient(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+// Which derivatives to compute: the point's (3 directions of automatic differentiation; a
+// filament relaxed against a held membrane), the vertices' (9; a membrane relaxed against
+// held filaments), or both (12, as the two apart, so that each part is the same to the
+// bit whichever is asked for; the value is the vertices' evaluation's when they are
+// asked for, and may differ from the point's in the last bits). What is not asked for
+// stays zero.
+enum class InverseFourthGradient { kPoint, kVertices, kBoth };
+TriangleInverseFourth triangleInverseFourthWithGradient(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                                                        InverseFourthGradient which = InverseFourthGradient::kBoth);
 
 }  // namespace cortex

@@ -377,6 +377,13 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
   const auto motors = root.tableArray("motor");
   for (std::size_t i = 0; i < motors.size(); ++i) {
     f.motors.push_back(readMotor(motors[i], species, force_tolerance));
+    // Steps are whole monomers of the first type (FilamentNetwork::spacing): one that
+    // rounds to none was taken as one, 2.7 times (or 2,700 times) the step asked for.
+    const double monomer = f.types.front().monomer_size;
+    if (std::lround(f.motors.back().step_size / monomer) < 1)
+      motors[i].fail("step_size", fmt::format("{:g} nm rounds to no monomer of {:g} nm (filament_type.0's "
+                                              "monomer_size); a motor steps whole monomers: at least {:g} nm",
+                                              f.motors.back().step_size, monomer, 0.5 * monomer));
     names.add(motors[i], fmt::format("motor.{}", i), f.motors.back().name, f.motors.back().species);
   }
   const auto branchers = root.tableArray("brancher");

@@ -89,16 +89,6 @@ bool someVertexOnSide(const SurfaceMesh& surface, const SurfaceMesh& wall, bool 
   return false;
 }
 
-// Vertices of `surface` outside the compartment grid (beyond round-off of its faces).
-Index verticesOutsideGrid(const SurfaceMesh& surface, const CompartmentGrid& grid) {
-  const double slack = 1e-9 * grid.extent().maxCoeff();
-  const Eigen::AlignedBox3d box(Vec3::Constant(-slack), grid.extent() + Vec3::Constant(slack));
-  Index outside = 0;
-  for (Index v = 0; v < surface.numVertices(); ++v)
-    if (!surface.isDeletedVertex(v) && !box.contains(surface.positions()[v])) ++outside;
-  return outside;
-}
-
 const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& membranes, const std::string& name) {
   for (const auto& m : membranes)
     if (m->name() == name) return *m;
@@ -107,21 +97,66 @@ const Membrane& membraneNamed(const std::vector<std::unique_ptr<Membrane>>& memb
 
 }  // namespace
 
+Index surfaceJoinedTo3D(const ReactionDef& def, const ChemistryConfig& config) {
+  Index surface = -1;
+  bool has3D = false;
+  for (const auto* list : {&def.reactants, &def.products})
+    for (const Stoichiometry& x : *list) {
+      const Index k = config.species[x.species].surface;
+      if (k >= 0) surface = k;
+      else has3D = true;
+    }
+  return has3D ? surface : -1;
+}
+
+OutsideGrid outsideGrid(const Membrane& membrane, const CompartmentGrid& grid) {
+  const SurfaceMesh& surface = membrane.mesh();
+  const double slack = 1e-9 * grid.extent().maxCoeff();
+  const Eigen::AlignedBox3d box(Vec3::Constant(-slack), grid.extent() + Vec3::Constant(slack));
+  std::vector<Index> outside;
+  for (Index v = 0; v < surface.numVertices(); ++v)
+    if (!surface.isDeletedVertex(v) && !box.contains(surface.positions()[v])) outside.push_back(v);
+  if (outside.empty()) return {};
+  const MeshGeometry g = membrane.currentGeometry();
+  double area = 0.0;
+  for (Index v : outside) area += g.vertex_area[v];
+  return {static_cast<Index>(outside.size()), area / g.area};
+}
+
+std::optional<std::string> insideBeyondGrid(const std::vector<std::unique_ptr<Membrane>>& membranes,
+                                            const CompartmentGrid& grid, const std::vector<SpeciesSide>& sides,
+                                            const std::vector<ReactionRestriction>& restrictions,
+                                            const std::vector<SpeciesDef>& species, double tolerated) {
+  const auto beyond = [&](const SpeciesSide& side, const std::string& key) -> std::optional<std::string> {
+    if (side.membrane.empty() || side.outside) return std::nullopt;
+    const Membrane& m = membraneNamed(membranes, side.membrane);
+    const OutsideGrid out = outsideGrid(m, grid);
+    if (out.vertices == 0 || out.area_fraction <= tolerated) return std::nullopt;
+    return fmt::format("{} = \"{}\": {} of the {} vertices of \"{}\" ({:.3g}% of its area) lie outside the "
+                       "compartment grid (the box from [0, 0, 0] to [{}] nm); the part of its inside beyond the grid "
+                       "would hold none of the copies, which would crowd into the rest: keep the membrane within the "
+                       "grid or widen [compartments]",
+                       key, side.membrane, out.vertices, m.mesh().numVertices(), side.membrane,
+                       100.0 * out.area_fraction, fmt::join(grid.extent(), ", "));
+  };
+  for (std::size_t s = 0; s < sides.size(); ++s)
+    if (auto what = beyond(sides[s], fmt::format("[[species]] \"{}\" inside", species[s].name))) return what;
+  for (std::size_t r = 0; r < restrictions.size(); ++r)
+    if (auto what = beyond(restrictions[r].side, fmt::format("reaction.{}.inside", r))) return what;
+  return std::nullopt;
+}
+
 void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config,
                                const std::string& source) {
   const CompartmentGrid& grid = config.grid;
   for (std::size_t r = 0; r < config.reactions.size(); ++r) {
     const ReactionDef& def = config.reactions[r];
-    Index surface = -1, confined = -1;
-    bool has3D = false;
+    const Index surface = surfaceJoinedTo3D(def, config);
+    if (surface < 0) continue;
+    Index confined = -1;
     for (const auto* list : {&def.reactants, &def.products})
-      for (const Stoichiometry& x : *list) {
-        const SpeciesDef& s = config.species[x.species];
-        if (s.surface >= 0) surface = s.surface;
-        else has3D = true;
-        if (s.surface < 0 && !config.sides[x.species].membrane.empty()) confined = x.species;
-      }
-    if (surface < 0 || !(confined >= 0 || has3D)) continue;
+      for (const Stoichiometry& x : *list)
+        if (config.species[x.species].surface < 0 && !config.sides[x.species].membrane.empty()) confined = x.species;
     const std::string& on = config.surfaces[surface];
     const std::string key = fmt::format("reaction.{}.equation", r);
     // Its 3D species are those of the compartment holding each vertex, found by clamping
@@ -130,7 +165,7 @@ void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& 
     // it encloses beyond the grid held nothing (a vesicle with 16% of its volume outside
     // came to a binding equilibrium 18% off, exit 0).
     const SurfaceMesh& mesh = membraneNamed(membranes, on).mesh();
-    if (const Index outside = verticesOutsideGrid(mesh, grid); outside > 0)
+    if (const Index outside = outsideGrid(membraneNamed(membranes, on), grid).vertices; outside > 0)
       throw InputError(fmt::format("{}: {}: it joins species on membrane \"{}\" with 3D species, but {} of the {} "
                                    "vertices of \"{}\" lie outside the compartment grid (the box from [0, 0, 0] to "
                                    "[{}] nm), where no volume holds species: place the membrane within the grid or "
@@ -168,6 +203,9 @@ void ConfinementFeedback::update(System& system) {
   std::vector<SpeciesSide> sides = sides_;
   const std::size_t species = sides.size();
   for (const ReactionRestriction& r : restrictions_) sides.push_back(r.side);
+  if (const auto what = insideBeyondGrid(system.membranes(), grid_, sides_, restrictions_,
+                                         system.chemistryModel().species, kLargestAreaOutsideGrid))
+    throw RunError(fmt::format("t = {:.6g} s, after the relaxation: {}", system.time(), *what));
   const auto fractions = sideFractions(system.membranes(), sides, grid_);
   for (std::size_t s = 0; s < species; ++s) {
     if (!fractions[s]) continue;

@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "sim/feedback.hpp"
@@ -32,6 +33,38 @@ std::vector<std::optional<SideFractions>> sideFractions(const std::vector<std::u
 // one (CompartmentSlicing tests, docs/chemistry.md). Under one compartment across
 // (10-50%) it throws InputError instead.
 void checkSlicingResolution(const std::vector<std::unique_ptr<Membrane>>& membranes, const ChemistryConfig& config);
+
+// The surface (index in ChemistryConfig::surfaces) whose species reaction `def` joins
+// with 3D species (binding, unbinding), or -1 if it has no membrane species or no 3D ones.
+Index surfaceJoinedTo3D(const ReactionDef& def, const ChemistryConfig& config);
+// The vertices of a membrane outside the compartment grid (beyond round-off of its
+// faces), and the share of its area their dual cells carry.
+struct OutsideGrid {
+  Index vertices = 0;
+  double area_fraction = 0.0;
+};
+OutsideGrid outsideGrid(const Membrane& membrane, const CompartmentGrid& grid);
+// During a run a membrane may reach past the grid's walls by this share of its area
+// (its dual cells beyond them) before the run stops; the start allows none. The error it
+// makes is at most this: copies bound into the grid's edge from that area, and a
+// membrane's inside beyond a wall, whose copies crowd into the rest, encloses less than
+// this share of its volume for a cap (docs/chemistry.md).
+inline constexpr double kLargestAreaOutsideGrid = 0.01;
+
+// A membrane holding species or reactions on its inside (`inside = "NAME"`) must lie
+// within the compartment grid: slicing sees only the grid, so the part of its inside
+// beyond a wall would hold nothing and its species would crowd into the rest (a vesicle
+// with 16% of its volume beyond a wall held its copies at concentrations 19% too high,
+// exit 0). Returns what is wrong (the key that confines, the membrane, its vertices
+// outside, the grid's box), or nothing.
+// Outside sides need no such check: the grid is then the world the species live in.
+// `sides` per species (of `species`, their definitions), `restrictions` per reaction;
+// `tolerated` the share of its area a membrane may have outside (0 or
+// kLargestAreaOutsideGrid).
+std::optional<std::string> insideBeyondGrid(const std::vector<std::unique_ptr<Membrane>>& membranes,
+                                            const CompartmentGrid& grid, const std::vector<SpeciesSide>& sides,
+                                            const std::vector<ReactionRestriction>& restrictions,
+                                            const std::vector<SpeciesDef>& species, double tolerated);
 
 // A reaction of membrane species with 3D species needs its membrane within the
 // compartment grid (each vertex reacts with the compartment holding it; clamped into the

@@ -1,5 +1,11 @@
 #include "sim/filament_feedback.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <Eigen/Geometry>
+
+#include "core/error.hpp"
 #include "sim/system.hpp"
 
 namespace cortex {
@@ -8,7 +14,27 @@ FilamentFeedback::FilamentFeedback(FilamentNetwork& network, FilamentTerms terms
                                    EndLoadProbe* end_loads)
     : network_(network), terms_(terms), chemistry_(chemistry), end_loads_(end_loads) {}
 
-void FilamentFeedback::update(System& system) { apply(system.coordinates(), system.forceField()); }
+void FilamentFeedback::update(System& system) {
+  checkWithinGrid(system.grid(), system.time());
+  apply(system.coordinates(), system.forceField());
+}
+
+void FilamentFeedback::checkWithinGrid(const CompartmentGrid& grid, double t) const {
+  const double slack = kLargestReachOutsideGrid * grid.size;
+  const Eigen::AlignedBox3d box(Vec3::Constant(-slack), grid.extent() + Vec3::Constant(slack));
+  const auto& filaments = network_.filaments();
+  for (std::size_t f = 0; f < filaments.size(); ++f)
+    for (const Vec3& x : filaments[f].beads) {
+      if (box.contains(x)) continue;
+      const double beyond = (x - x.cwiseMax(Vec3::Zero()).cwiseMin(grid.extent())).norm();
+      throw RunError(fmt::format(
+          "t = {:.6g} s: filament {} reached [{:.1f}, {:.1f}, {:.1f}] nm, {:.3g} nm outside the compartment grid (the "
+          "box from [0, 0, 0] to [{}] nm; {:g} of a compartment, {:g} nm, is tolerated), where its ends and sites "
+          "would exchange copies with the grid's edge compartment: widen [compartments], or hold the filaments in "
+          "with a [boundary]",
+          t, f, x.x(), x.y(), x.z(), beyond, fmt::join(grid.extent(), ", "), kLargestReachOutsideGrid, slack));
+    }
+}
 
 void FilamentFeedback::apply(const Eigen::VectorXd& x, ForceField& force_field) {
   const Eigen::VectorXd forces = force_field.contactForces(x);

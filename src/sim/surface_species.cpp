@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "membrane/curvature.hpp"
+#include "sim/confinement.hpp"
 #include "sim/curvature_sensing.hpp"
 #include "sim/pair_interaction.hpp"
 #include "sim/surface_drift.hpp"
@@ -145,12 +146,14 @@ SurfaceSpeciesFeedback::SurfaceSpeciesFeedback(const ChemistryConfig& config,
       factors_(std::move(config_factors)),
       thermal_energy_(thermal_energy) {
   for (const std::string& name : config.surfaces) {
-    Surface s{-1, {}, {}};
+    Surface s{-1, {}, {}, {}};
     for (std::size_t m = 0; m < membranes.size(); ++m)
       if (membranes[m]->name() == name) s.membrane = static_cast<Index>(m), s.configs = membrane_configs[m].species;
     const auto k = static_cast<Index>(surfaces_.size());
     for (Index sp = 0; sp < species_count_; ++sp)
       if (config.species[sp].surface == k) s.species.push_back(sp);
+    for (std::size_t r = 0; r < config.reactions.size() && s.joined_to_3d.empty(); ++r)
+      if (surfaceJoinedTo3D(config.reactions[r], config) == k) s.joined_to_3d = fmt::format("reaction.{}.equation", r);
     surfaces_.push_back(std::move(s));
   }
   for (std::size_t r = 0; r < config.reactions.size(); ++r) {
@@ -181,6 +184,19 @@ void SurfaceSpeciesFeedback::update(System& system) {
     const SurfaceMesh& mesh = membrane.mesh();
     DualCellGraph cells = dualCellGraph(mesh);
     closed_.cotangent += cells.clipped_edges;
+    // The start refuses a membrane reaching beyond the grid (checkSurfaceReactionsCanFire);
+    // one that grew or moved there since binds into the grid's edge from the area beyond
+    // it, where no volume holds species: tolerated up to kLargestAreaOutsideGrid.
+    if (!s.joined_to_3d.empty())
+      if (const OutsideGrid out = outsideGrid(membrane, grid_); out.area_fraction > kLargestAreaOutsideGrid)
+        throw RunError(fmt::format("t = {:.6g} s: membrane \"{}\": {} of its {} vertices ({:.3g}% of its area, over "
+                                   "the {:g}% a run tolerates) moved outside the compartment grid (the box from "
+                                   "[0, 0, 0] to [{}] nm), where no volume holds the 3D species its proteins react "
+                                   "with ({}): widen [compartments] or keep the membrane farther from the grid's "
+                                   "walls",
+                                   system.time(), membrane.name(), out.vertices, mesh.numVertices(),
+                                   100.0 * out.area_fraction, 100.0 * kLargestAreaOutsideGrid,
+                                   fmt::join(grid_.extent(), ", "), s.joined_to_3d));
     const Index n = mesh.numVertices();
     std::vector<Index> holders(static_cast<std::size_t>(n));
     for (Index v = 0; v < n; ++v) holders[v] = grid_.locate(mesh.positions()[v]);

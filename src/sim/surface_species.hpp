@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sim/feedback.hpp"
@@ -60,6 +61,9 @@ class SurfaceSpeciesFeedback final : public Feedback {
     Index membrane;              // index in the System's membranes
     std::vector<Index> species;  // model indices, in the membrane's species order
     std::vector<SurfaceSpeciesConfig> configs;  // likewise
+    // The first reaction joining its species with 3D species (`reaction.N.equation`), or
+    // empty: with one, the membrane must stay within the compartment grid.
+    std::string joined_to_3d;
   };
   // External potential (k_BT) per vertex of each species that has one, empty for the others.
   std::vector<std::vector<double>> potentials(const Surface& s, const Membrane& membrane) const;

@@ -8,6 +8,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "filament/filament_terms.hpp"
+#include "interact/inside_membrane.hpp"
 #include "interact/membrane_bead_exclusion.hpp"
 #include "interact/membrane_crossing.hpp"
 #include "mech/resolvable_forces.hpp"
@@ -136,6 +137,8 @@ System::~System() = default;
 void System::buildChemistry(const Config& config, const SystemState* restored, const FilamentTerms& filament_terms) {
   const ChemistryConfig& cc = *config.chemistry;
   checkSlicingResolution(membranes_, cc);  // before anything is built on the slices
+  if (const auto what = insideBeyondGrid(membranes_, cc.grid, cc.sides, cc.reaction_restrictions, cc.species, 0.0))
+    throw InputError(config.source + ": " + *what);
   checkSurfaceReactionsCanFire(membranes_, cc, config.source);
   const auto seed = static_cast<std::uint64_t>(config.simulation.seed);
   chemistry_model_ = cortex::chemistryModel(cc);
@@ -193,6 +196,17 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
     probes.push_back(cylinder_loads_.get());
     end_load_sum_ = std::make_unique<EndLoadSum>(std::move(probes));
     filament_chemistry_->setEndLoadProbe(end_load_sum_.get());
+    // Nuclei form where their monomers live: on the side of the membrane that confines
+    // them (nuclei placed anywhere in the compartment grew filaments outside a vesicle
+    // whose inside alone held the monomers, exit 0).
+    for (std::size_t t = 0; t < config.filaments->types.size(); ++t) {
+      const Index g = config.filaments->types[t].monomer_species_index;
+      if (g < 0 || cc.sides[g].membrane.empty()) continue;
+      const Membrane* m = &closedMembrane(membranes_, cc.sides[g].membrane, "filament nucleation");
+      filament_chemistry_->setNucleationSide(static_cast<Index>(t), [m, outside = cc.sides[g].outside](const Vec3& p) {
+        return (windingNumber(m->mesh(), p) > 0.5) != outside;
+      });
+    }
     feedback_.push_back(
         std::make_unique<FilamentFeedback>(*filaments_, filament_terms, *filament_chemistry_, end_load_sum_.get()));
   }

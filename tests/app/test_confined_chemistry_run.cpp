@@ -224,6 +224,10 @@ rate = 10.0
   std::string far = twoVesicles(2300.0, 500.0, "inside");
   far.replace(far.find("center = [2300,"), 15, "center = [9.0e4,");
   expectCheckFails(far, "reaction.0.equation", "vertices of \"v2\" lie outside the compartment grid");
+  // Species inside a vesicle partly outside the grid would crowd into the part within it.
+  std::string inside_beyond = confinedConfig(0.1);
+  inside_beyond.replace(inside_beyond.find("center = [750, 750, 750]"), 24, "center = [750, 750, 1200]");
+  expectCheckFails(inside_beyond, "[[species]] \"A\" inside = \"vesicle\"", "lie outside the compartment grid");
   // Partly outside (x up to 3200 nm in a 3000 nm grid): its cap beyond the grid bound into
   // the grid's edge while the volume there held nothing, an equilibrium 18% off (exit 0).
   std::string partly = twoVesicles(2300.0, 500.0, "inside");
@@ -266,6 +270,79 @@ TEST(ConfinedChemistryRun, AVesicleFewCompartmentsAcrossIsWarnedOf) {
   std::string too_coarse = confinedConfig(0.1);
   too_coarse.replace(too_coarse.find("size = 250"), 10, "size = 1100");
   expectCheckFails(too_coarse, "vesicle", "0.91 compartments across");
+}
+
+// The grid checks hold through the run, not only at the start: a vesicle whose area
+// doubles over 0.05 s (R 400 -> 566 nm) grows past the grid's wall at x = 1500 nm after
+// t = 0.02 s: 0.6% of its area is beyond it at t = 0.03 s (tolerated, under 1%), 3.6% at
+// 0.04 s. Before, its proteins bound into the grid's edge from that area and the species
+// inside it crowded into the part within the grid, exit 0. Now exit 1 at t = 0.04 s,
+// naming what needs the grid, the snapshots before kept; in a grid wide enough the same
+// run finishes.
+TEST(ConfinedChemistryRun, AMembraneGrowingOutOfTheGridStopsTheRun) {
+  TempDir dir;
+  const std::string text = R"([simulation]
+seed = 2
+end_time = 0.06
+chemistry_window = 0.01
+snapshot_interval = 0.01
+
+[[membrane]]
+name = "v"
+shape = "sphere"
+center = [1000.0, 750.0, 750.0]
+radius = 400.0
+mesh_size = 80.0
+bending_modulus = 100.0
+target_area = [[0.0, 2.0106e6], [0.05, 4.0212e6]]
+
+[[membrane.species]]
+name = "N"
+diffusion = 1.0e5
+copies = 200
+
+[compartments]
+size = 250.0
+shape = [6, 6, 6]
+
+[[species]]
+name = "G"
+diffusion = 1.0e6
+copies = 1000
+inside = "v"
+
+[[reaction]]
+equation = "N -> G"
+rate = 10.0
+[[reaction]]
+equation = "G -> N"
+rate = 100.0
+)";
+  const auto run = [&](const std::string& config_text, const std::string& name) {
+    return runCortex({"run", writeConfig(dir.path(), config_text, name + ".toml").string(), "-o",
+                      (dir.path() / name).string()},
+                     dir.path());
+  };
+  // G free in the grid: the proteins' binding needs the membrane within it.
+  std::string free = text;
+  free.erase(free.find("inside = \"v\"\n"), 13);
+  const RunResult grown = run(free, "grown");
+  EXPECT_EQ(grown.exit_code, 1) << describe(grown);
+  EXPECT_NE(grown.err.find("t = 0.04 s: membrane \"v\": "), std::string::npos) << describe(grown);
+  EXPECT_NE(grown.err.find("% of its area, over the 1% a run tolerates) moved outside the compartment grid"), std::string::npos) << describe(grown);
+  EXPECT_NE(grown.err.find("(reaction.0.equation)"), std::string::npos) << describe(grown);
+  EXPECT_TRUE(fs::exists(dir.path() / "grown" / "snapshots" / "000003.h5")) << describe(grown);
+  // G inside the vesicle: its inside must stay within the grid (checked first).
+  const RunResult confined = run(text, "confined");
+  EXPECT_EQ(confined.exit_code, 1) << describe(confined);
+  EXPECT_NE(confined.err.find("t = 0.04 s, after the relaxation: [[species]] \"G\" inside = \"v\": "),
+            std::string::npos)
+      << describe(confined);
+  EXPECT_NE(confined.err.find("lie outside the compartment grid"), std::string::npos) << describe(confined);
+  std::string wide = text;
+  wide.replace(wide.find("shape = [6, 6, 6]"), 17, "shape = [8, 6, 6]");
+  const RunResult inside = run(wide, "wide");
+  EXPECT_EQ(inside.exit_code, 0) << describe(inside);
 }
 
 TEST(ConfinedChemistryRun, ExampleIsAccepted) {

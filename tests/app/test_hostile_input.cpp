@@ -148,6 +148,9 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
                              "boundary repulsion 1e300");
   // Rounded to whole monomers, a step of 1e300 nm overflowed and walked like 2.7 nm.
   expectRefusedInCheckAndRun(dir, motor + "step_size = 1e300\n", "motor.0.step_size", "motor step 1e300 nm");
+  // And a step under half a monomer (2.7 nm) rounded to none and was taken as one: 1 nm
+  // walked 2.7 times as far as asked, 0.001 nm 2,700 times, exit 0.
+  expectRefusedInCheckAndRun(dir, motor + "step_size = 1.0\n", "motor.0.step_size", "motor step 1 nm");
   // Cylinders of 0.044 nm (monomer_size 0.0011) overlapped their own filament's excluded
   // volume: 83 s to exit 1 with 1e6 pN, or 4 GB placing linker sites.
   expectRefusedInCheckAndRun(dir, filaments + "monomer_size = 0.0011\n", "filament_type.0.monomer_size",

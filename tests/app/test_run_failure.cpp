@@ -246,5 +246,47 @@ reduced_volume = 0.999
   EXPECT_NE(r.err.find("area and volume targets cannot be held together"), std::string::npos) << describe(r);
 }
 
+// A filament growing out of the compartment grid (no [boundary] holds it): its plus end
+// reacted with the edge compartment wherever it was, and one filament grew 3 µm out of a
+// one-compartment grid on that compartment's monomers, exit 0. Now the run stops once a
+// bead is more than a tenth of a compartment (50 nm) outside; with a [boundary] (walls at
+// the grid's faces) the same filament stalls at the wall and the run finishes.
+TEST(RunFailure, AFilamentGrowingOutOfTheGridStopsTheRun) {
+  TempDir dir;
+  const std::string text = R"([simulation]
+seed = 1
+end_time = 1.0
+chemistry_window = 0.05
+snapshot_interval = 0.5
+[compartments]
+size = 500.0
+shape = [1, 1, 1]
+[[species]]
+name = "G"
+diffusion = 2.0e7
+concentration = 20.0
+[[filament_type]]
+name = "actin"
+monomer_species = "G"
+[[filaments]]
+count = 1
+length = 108.0
+placement = "bundle"
+center = [400.0, 250.0, 250.0]
+direction = [1.0, 0.0, 0.0]
+)";
+  const RunResult out = runConfig(writeConfig(dir.path(), text, "out.toml"), dir / "out", {}, dir.path());
+  EXPECT_EQ(out.exit_code, 1) << describe(out);
+  EXPECT_NE(out.err.find("filament 0 reached ["), std::string::npos) << describe(out);
+  EXPECT_NE(out.err.find("nm outside the compartment grid (the box from [0, 0, 0] to [500, 500, 500] nm; 0.1 of a "
+                         "compartment, 50 nm, is tolerated)"),
+            std::string::npos)
+      << describe(out);
+  EXPECT_TRUE(fs::exists(dir / "out" / "snapshots" / "000000.h5")) << describe(out);
+  const RunResult walled =
+      runConfig(writeConfig(dir.path(), text + "[boundary]\n", "walled.toml"), dir / "walled", {}, dir.path());
+  EXPECT_EQ(walled.exit_code, 0) << describe(walled);
+}
+
 }  // namespace
 }  // namespace cortex::cli_test

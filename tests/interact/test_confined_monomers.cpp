@@ -39,7 +39,7 @@ TEST(ConfinedMonomers, StayInsideTheVesicleTheBundlesDeform) {
 
   const SurfaceMesh& mesh = system.membranes()[0]->mesh();
   double reach = 0.0;
-  for (const Vec3& x : mesh.positions()) reach = std::max(reach, (x - Vec3(400, 400, 400)).norm());
+  for (const Vec3& x : mesh.positions()) reach = std::max(reach, (x - Vec3(800, 400, 400)).norm());
   EXPECT_GT(reach, 330.0) << "the vesicle (radius 300 nm) was not deformed";
   const CompartmentGrid& grid = system.grid();
   int holding = 0;
@@ -53,6 +53,27 @@ TEST(ConfinedMonomers, StayInsideTheVesicleTheBundlesDeform) {
     EXPECT_TRUE(reaches) << "free copies in compartment " << c << ", which lies wholly outside the vesicle";
   }
   EXPECT_GT(holding, 0);
+}
+
+// Nuclei form where the monomers are: with nucleation on, every filament, the nucleated
+// ones included, lies inside the vesicle that confines G. Before, nuclei were placed
+// anywhere in a compartment the vesicle cuts, and the compartments it barely cuts (high
+// concentration in a small volume) formed the most: this run stopped at t = 0.09 s with
+// a nucleus through the membrane, and seed 3 to 0.5 s grew two filaments wholly outside.
+TEST(ConfinedMonomers, NucleiFormOnTheMonomersSide) {
+  Config config = loadConfig(CORTEX_SOURCE_DIR "/examples/vesicle_bundles.toml",
+                             {"simulation.end_time=0.3", "simulation.seed=3", "filament_type.0.nucleation_rate=0.0005"});
+  System system(config);
+  const std::size_t initial = system.filaments()->filaments().size();
+  RunObserver quiet;
+  Simulation sim(system, config.simulation, config.mechanics, quiet);
+  ASSERT_EQ(sim.run(true), RunOutcome::kFinished);
+  const auto& filaments = system.filaments()->filaments();
+  EXPECT_GE(filaments.size(), initial + 10) << "too few nuclei to test where they form";
+  const SurfaceMesh& mesh = system.membranes()[0]->mesh();
+  for (std::size_t f = 0; f < filaments.size(); ++f)
+    for (const Vec3& x : filaments[f].beads)
+      EXPECT_GT(windingNumber(mesh, x), 0.5) << "filament " << f << " has a bead outside the vesicle";
 }
 
 }  // namespace

@@ -20,10 +20,14 @@
 namespace cortex {
 namespace {
 
+// Walls at the grid's faces: filaments growing sideways past the patch's edge would leave
+// the grid, which stops a run (their ends would react with the edge compartment).
 const char* kCommon = R"(
 [compartments]
 size = 250.0
 shape = [2, 2, 2]
+
+[boundary]
 
 [[species]]
 name = "G"

@@ -91,7 +91,9 @@ TEST(MembraneBeadExclusion, OneBodyAloneSeesTheOtherWhereItIsHeld) {
   // The network alone: the same energy and bead gradient.
   s.network->setOffset(0);
   std::vector<double> beads(s.x.begin() + s.vertexCoordinates(), s.x.end()), g_beads(beads.size(), 0.0);
-  EXPECT_EQ(term.evaluate({beads.data(), g_beads.data(), 3, s.network.get()}), energy);
+  // The energy to rounding: the kernel differentiated along the beads alone is other
+  // instructions than along both (triangle_inverse_fourth.hpp); its gradient is the same.
+  EXPECT_NEAR(term.evaluate({beads.data(), g_beads.data(), 3, s.network.get()}), energy, 1e-13 * energy);
   for (std::size_t i = 0; i < beads.size(); ++i) EXPECT_EQ(g_beads[i], full[s.vertexCoordinates() + i]);
 }
 
