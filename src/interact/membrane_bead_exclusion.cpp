@@ -147,8 +147,8 @@ MembraneBeadExclusion::PairEnergy MembraneBeadExclusion::pairEnergy(
   if (!std::isfinite(r.value)) return out;
   // ∇(S I) = S ∇I + I S' ∇distance; ∇_p distance = n̂, ∇_vertex i distance = −w_i n̂.
   const Vec3 away = fade_slope != 0.0 ? Vec3(k * r.value * fade_slope * (p - nearest.point) / distance) : Vec3::Zero();
-  if (*gradient != InverseFourthGradient::kVertices) out.d_point = k * fade * r.d_point + away;
-  if (*gradient != InverseFourthGradient::kPoint)
+  out.d_point = k * fade * r.d_point + away;
+  if (*gradient == InverseFourthGradient::kAll)
     for (int v = 0; v < 3; ++v) out.d_vertices[v] = k * fade * r.d_vertices[v] - nearest.weight[v] * away;
   return out;
 }
@@ -203,11 +203,10 @@ double MembraneBeadExclusion::evaluate(const Evaluation& e) {
   double* vertex_gradient = e.gradient && e.moves(membrane_) ? e.gradient + 3 * membrane_.offset() : nullptr;
   double* bead_gradient = e.gradient && e.moves(network_) ? e.gradient + 3 * network_.offset() : nullptr;
   // Derivatives only along what moves: a filament relaxation under a held membrane needs
-  // the beads' (3 directions of the kernel's automatic differentiation instead of 12).
+  // the beads' (the kernel's automatic differentiation in 4 directions instead of 12).
   std::optional<InverseFourthGradient> gradient;
-  if (bead_gradient && vertex_gradient) gradient = InverseFourthGradient::kBoth;
+  if (vertex_gradient) gradient = InverseFourthGradient::kAll;
   else if (bead_gradient) gradient = InverseFourthGradient::kPoint;
-  else if (vertex_gradient) gradient = InverseFourthGradient::kVertices;
   const auto& triangles = membrane_.topology().triangles;
   double energy = 0.0;
   active_pairs_ = 0;

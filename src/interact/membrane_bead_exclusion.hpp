@@ -79,8 +79,8 @@ class MembraneBeadExclusion final : public EnergyTerm {
     Index face, bead;  // bead: index into beads_ (the selected beads)
   };
   // One bead and one triangle: inactive beyond the cut-off; the energy (pN·nm, infinite
-  // on the triangle) and, if asked (`gradient`), its gradient on the bead and/or the three
-  // vertices (the others stay zero).
+  // on the triangle) and, if asked (`gradient`), its gradient on the bead and, unless
+  // kPoint, the three vertices (zero then).
   struct PairEnergy {
     bool active = false;
     double energy = 0.0;
