@@ -8,8 +8,16 @@ from .commands import COMMANDS
 from .errors import CortexError
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse with its errors (a missing argument, a flag value its type refuses) on one
+    line, as the commands' own: argparse's usage lines before it would make two."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (--help lists the flags)\n")
+
+
 def parser():
-    p = argparse.ArgumentParser(
+    p = Parser(
         prog="python3 -m cortex",
         description="Look at cortex runs: pictures, plots, movies, numbers (docs/python.md).",
         epilog="Every command takes the run folder(s) first and -o/--out FILE; "

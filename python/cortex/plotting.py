@@ -24,6 +24,12 @@ def pyplot():
     return plt
 
 
+def image_formats():
+    """File extensions savefig writes (png, pdf, svg, ...)."""
+    from matplotlib.backend_bases import FigureCanvasBase
+    return set(FigureCanvasBase.get_supported_filetypes())
+
+
 def save(fig, path, dpi):
     """Write a figure and close it (figures stay alive in pyplot's registry otherwise)."""
     try:

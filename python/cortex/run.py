@@ -11,6 +11,7 @@ import difflib
 import fnmatch
 import json
 import os
+import tomllib
 from functools import cached_property
 
 import h5py
@@ -136,6 +137,23 @@ class Run:
     def config(self):
         """The run's effective configuration as TOML text (None in files older than it)."""
         return self.attrs.get("config")
+
+    @cached_property
+    def membrane_order(self):
+        """Membrane names in the config's order, the order snapshots list them in (so "the
+        first membrane" is the config's first, not the alphabetically first that HDF5
+        groups give): from summary.json, else the stored config (a run stopped before its
+        summary), else [] (then by name)."""
+        try:
+            if self.summary is not None:
+                return [m.get("name") for m in self.summary.get("membranes", []) if isinstance(m, dict)]
+            if self.config is not None:
+                # An unnamed membrane is named as cortex names it (src/io/config.cpp).
+                return [m.get("name", f"membrane{i}")
+                        for i, m in enumerate(tomllib.loads(self.config).get("membrane", []))]
+        except (CortexError, tomllib.TOMLDecodeError, AttributeError):
+            pass                        # an unreadable summary or config: order by name
+        return []
 
     # -------------------------------------------------------------- snapshots
 

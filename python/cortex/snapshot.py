@@ -110,12 +110,15 @@ class Snapshot:
 
     @cached_property
     def membranes(self):
-        """Membranes by name (an empty dict in runs without them)."""
+        """Membranes by name in the config's order (Run.membrane_order; an empty dict in
+        runs without them)."""
         g = self._group()
         if "membranes" not in g:
             return {}
+        rank = {name: i for i, name in enumerate(self.run.membrane_order)}
         out = {}
-        for name, m in sorted(g["membranes"].items()):
+        for name in sorted(g["membranes"], key=lambda n: (rank.get(n, len(rank)), n)):
+            m = g["membranes"][name]
             h = np.asarray(m["mean_curvature"][()], dtype=float) if "mean_curvature" in m else None
             f = np.asarray(m["contact_force"][()], dtype=float) if "contact_force" in m else None
             species = ({k: np.asarray(d[()], dtype=np.int64) for k, d in m["species"].items()}

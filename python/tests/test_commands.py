@@ -3,9 +3,11 @@ input exits with code 2 and one line naming what is wrong."""
 
 import math
 import os
+import shutil
 import tempfile
 import unittest
 
+import h5py
 import numpy as np
 
 import cortex
@@ -61,6 +63,24 @@ class CommandsTest(unittest.TestCase):
         code, stdout, stderr = command(*argv)
         self.assertEqual(code, 0, f"{argv}: {stderr}")
         return stdout
+
+    def refused(self, argv, message):
+        """The command exits 2 with one line on stderr holding `message`."""
+        code, _, stderr = command(*argv)
+        self.assertEqual(code, 2, f"{argv}: {stderr}")
+        self.assertEqual(len(stderr.strip().splitlines()), 1, stderr)
+        self.assertIn(message, stderr)
+
+    def stopped(self, name, snapshots):
+        """A copy of run `name` as a run stopped after its first `snapshots` snapshots
+        leaves it: the later ones not in trajectory.h5, no summary.json."""
+        path = self.out(f"{name}_stopped_{snapshots}")
+        if not os.path.isdir(path):
+            shutil.copytree(self.runs[name], path, ignore=shutil.ignore_patterns("summary.json"))
+            with h5py.File(os.path.join(path, "trajectory.h5"), "a") as f:
+                for key in sorted(f["snapshots"])[snapshots:]:
+                    del f["snapshots"][key]
+        return path
 
     def test_membrane(self):
         v = self.runs["vesicle"]
@@ -125,6 +145,12 @@ class CommandsTest(unittest.TestCase):
         self.assertEqual(code, 2)
         self.assertIn("no membrane species", stderr)
 
+    def test_sorting_without_bound_copies_on_the_reference(self):
+        # A run stopped at snapshot 0 has no copies bound anywhere: densities relative to
+        # the least curved membrane's are undefined (not a ZeroDivisionError).
+        self.refused(["sorting", self.stopped("sorting", 1)],
+                     "no copies of 'B_large' on the least curved membrane 'large' in the 1 snapshot(s) from t = 0 s")
+
     def test_llps(self):
         p = self.runs["llps"]
         stdout = self.ok("llps", p, p, "--labels", "a,b", "--from", "0.02", "--csv", self.out("l.csv"),
@@ -146,6 +172,15 @@ class CommandsTest(unittest.TestCase):
         code, _, stderr = command("llps", self.runs["barrier"])
         self.assertEqual(code, 2)
         self.assertIn("no footprint", stderr)
+
+    def test_llps_says_how_each_run_was_pooled(self):
+        # The whole run pools t = 0.01 .. 0.05 s (from a fifth of 0.05 s); one stopped
+        # after 3 snapshots pools t = 0.01, 0.02 (from a fifth of 0.02 s): each row says so.
+        stdout = self.ok("llps", self.runs["llps"], self.stopped("llps", 3), "--labels", "whole,stopped")
+        rows = {line.split()[0]: line.split() for line in stdout.splitlines()
+                if line.split()[:1] in (["whole"], ["stopped"])}
+        self.assertEqual(rows["whole"][6:], ["5", "0.01"])
+        self.assertEqual(rows["stopped"][6:], ["2", "0.004"])
 
     def test_protrusion(self):
         b = self.runs["bundle"]
@@ -352,6 +387,46 @@ class CommandsTest(unittest.TestCase):
         code, _, stderr = command("membrane", v, "--size", "big")
         self.assertEqual(code, 2)
         self.assertIn("argument --size: 'big': expected W or W,H", stderr)
+
+    def test_first_membrane_is_the_configs_first(self):
+        # The sorting config lists 'small' before 'large' (HDF5 lists its groups by
+        # name): the default membrane is 'small', read from summary.json, or from the
+        # stored config in a run stopped before its summary.
+        for run in (self.runs["sorting"], self.stopped("sorting", 2)):
+            with self.subTest(run=run):
+                self.assertEqual(list(cortex.open(run).snapshot(0).membranes), ["small", "large"])
+                self.assertIn("membrane 'small'", self.ok("membrane", run, "--info").splitlines()[0])
+                self.assertIn("membrane 'small', species 'B_small'", self.ok("barrier", run).splitlines()[0])
+
+    def test_flag_values_are_checked(self):
+        # Zero, negative or non-finite numbers and pictures in formats matplotlib does not
+        # write: exit 2 naming the flag, before anything is read or drawn.
+        v, b, s, p = self.runs["vesicle"], self.runs["barrier"], self.runs["sorting"], self.runs["llps"]
+        png = self.out("refused.png")
+        cases = [
+            (["llps", p, "--bins", "0"], "argument --bins: '0': expected a whole number >= 1"),
+            (["llps", p, "--bins", "-1"], "argument --bins: '-1'"),
+            (["llps", p, "--from", "nan"], "argument --from: 'nan': expected a finite number"),
+            (["sorting", s, "--from", "nan"], "argument --from: 'nan': expected a finite number"),
+            (["plot", v, "time", "--dpi", "0", "-o", png], "argument --dpi: '0': expected a whole number >= 1"),
+            (["membrane", v, "--dpi", "-5", "-o", png], "argument --dpi: '-5'"),
+            (["movie", v, "--montage", "--dpi", "0", "-o", png], "argument --dpi: '0'"),
+            (["barrier", b, "--dpi", "0", "-o", png], "argument --dpi: '0'"),
+            (["plot", v, "time", "-o", self.out("x.txt")], "x.txt': expected a picture file ending in"),
+            (["membrane", v, "-o", self.out("x.foo")], "argument -o/--out:"),
+            (["sorting", s, "-o", self.out("x.txt")], "argument -o/--out:"),
+            (["plot", v, "time", "-o", self.out("no_extension")], "argument -o/--out:"),
+            (["barrier", b, "--split", "nan"], "argument --split: 'nan': expected a finite number"),
+            (["mesh-resolution", v, "--mesh-size", "-5"], "argument --mesh-size: '-5': expected a number > 0"),
+            (["mesh-resolution", v, "--mesh-size", "0"], "argument --mesh-size: '0'"),
+            (["membrane", v, "--clim", "nan"], "argument --clim: 'nan'"),
+            (["membrane", v, "--size", "nan", "-o", png], "argument --size: 'nan'"),
+        ]
+        for argv, message in cases:
+            with self.subTest(argv=argv):
+                self.refused(argv, message)
+        self.assertFalse(os.path.exists(png))
+        self.assertFalse(os.path.exists(self.out("no_extension.png")))
 
     def test_module_and_old_tool_command_lines(self):
         v, f = self.runs["vesicle"], self.runs["filaments"]

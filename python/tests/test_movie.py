@@ -69,7 +69,7 @@ class MovieTest(unittest.TestCase):
         self.assertGreater(width / height, 4.0)
         code, _, stderr = command("movie", self.runs["vesicle"], "--montage", "--columns", "0", "-o", row)
         self.assertEqual(code, 2)
-        self.assertIn("--columns 0: must be at least 1", stderr)
+        self.assertIn("argument --columns: '0': expected a whole number >= 1", stderr)
 
     def test_cutaway_leaves_out_the_near_half(self):
         # A sphere seen from the default view: the near half is the triangles whose

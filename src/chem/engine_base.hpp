@@ -106,8 +106,16 @@ class EngineBase : public ChemistryEngine {
   // Whether copies of s interact (setSurfaceInteraction).
   bool interacting(Index s) const { return interacts_[s] != 0; }
   // e^{V_i + R_i − K_ii + a_i(N_i − 1)}: the factor on the unbinding of interacting species
-  // s from surface subvolume i (the energy its copy leaves behind).
+  // s from surface subvolume i (the energy its copy leaves behind), the energy capped at
+  // kLargestUnbindingEnergy.
   double unbindingFactor(Index i, Index s) const;
+  // k_BT. Binding is not weighted by the energy a copy arrives at (thesis eq. 3.14), so a
+  // copy binds at the plain rate into a cell it can hardly share (a second protein larger
+  // than the cell: ~800 k_BT of curvature energy) and leaves at r e^{800}, an infinite rate
+  // that stopped the run. Capped at 10⁶ r (as the filaments' force-dependent factors), such
+  // a copy leaves within ~1/(10⁶ r), and states this far above their neighbours are
+  // occupied ~10⁻⁶ of the time instead of e^{-βV} (docs/proteins.md).
+  static constexpr double kLargestUnbindingEnergy = 13.815510557964274;  // ln 10⁶
   // Whether the field of interacting species u reads the copies of s (u is s or coupled
   // to it, setSurfaceCoupling).
   bool fieldReads(Index u, Index s) const {

@@ -103,7 +103,8 @@ double EngineBase::unbindingFactor(Index i, Index s) const {
   const SurfaceInteraction& k = interaction_[s];
   const Index a = i - region_start_[net_.speciesRegion[s]];
   const int n = copies_[static_cast<std::size_t>(i) * S_ + s];
-  return std::exp(k.potential[a] + field_[s][a] - k.self[a] + arrivalEnergy(s, a, std::max(n - 1, 0)));
+  const double energy = k.potential[a] + field_[s][a] - k.self[a] + arrivalEnergy(s, a, std::max(n - 1, 0));
+  return std::exp(std::min(energy, kLargestUnbindingEnergy));
 }
 
 double EngineBase::arrivalEnergy(Index s, Index a, int m) const {

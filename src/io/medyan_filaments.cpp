@@ -15,6 +15,8 @@ void Translator::filamentType() {
                                                        [](const auto& s) { return s.second.kind == "FILAMENT"; });
   monomer_size_ = value("MONOMERSIZE").value_or(2.7);
   cylinder_size_ = value("CYLINDERSIZE").value_or(108.0);
+  for (const auto& [key, size] : {std::pair{"MONOMERSIZE", monomer_size_}, std::pair{"CYLINDERSIZE", cylinder_size_}})
+    if (!(size > 0)) throw InputError(fmt::format("{}: {} {}: must be > 0 nm", whereOf(key), key, size));
   cylinder_monomers_ = static_cast<int>(std::lround(cylinder_size_ / monomer_size_));
   if (find("NUMFILAMENTTYPES")) {
     const double n = *value("NUMFILAMENTTYPES");
@@ -112,6 +114,10 @@ void Translator::filamentType() {
 
 void Translator::bindingSites() {
   if (const auto n = value("NUMBINDINGSITES")) {
+    // 0 became a site on every monomer (cylinder/0 rounded to the largest int, clamped).
+    if (!(*n >= 1) || *n > cylinder_monomers_)
+      throw InputError(fmt::format("{}: NUMBINDINGSITES {}: a cylinder of {} monomers holds 1 to {} binding sites",
+                                   whereOf("NUMBINDINGSITES"), *n, cylinder_monomers_, cylinder_monomers_));
     spacing_ = std::max(1, static_cast<int>(std::lround(cylinder_monomers_ / *n)));
     const bool exact = std::abs(cylinder_monomers_ / *n - spacing_) < 1e-9;
     (exact ? out_.translated : out_.untranslated)

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/config.hpp"
 #include "io/medyan_translator.hpp"
 
 namespace cortex {
@@ -84,6 +85,9 @@ void Translator::geometry(const std::string& system_name) {
 }
 
 void Translator::runControl() {
+  for (const char* k : {"RUNTIME", "MINIMIZATIONTIME", "SNAPSHOTTIME"})
+    if (const auto t = value(k); t && !(*t > 0))
+      throw InputError(fmt::format("{}: {} {}: must be > 0 s", whereOf(k), k, *t));
   toml_ << "[simulation]\n";
   if (const auto t = value("RUNTIME")) {
     toml_ << "end_time = " << num(*t) << "\n";
@@ -236,7 +240,17 @@ MedyanImport importMedyan(const fs::path& system_file, const std::optional<fs::p
   }
   std::vector<Entry> chemistry = parseFile(chem);
   Translator t(std::move(system), std::move(chemistry));
-  return t.run(system_file.filename().string(), chem.filename().string());
+  MedyanImport result = t.run(system_file.filename().string(), chem.filename().string());
+  // What is written must be a config cortex runs: a MEDYAN input whose values no
+  // keyword check above catches (100 million compartments, no species) is refused here,
+  // instead of a file that `cortex check` then refuses naming its own lines.
+  try {
+    parseConfig(result.toml, "the translated config", system_file.parent_path(), {});
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{} and {}: they translate to a config cortex cannot run ({}); nothing was written",
+                                 system_file.string(), chem.string(), e.what()));
+  }
+  return result;
 }
 
 int runImportMedyan(const fs::path& system_file, const std::optional<fs::path>& chemistry_file, const fs::path& output,
@@ -244,7 +258,12 @@ int runImportMedyan(const fs::path& system_file, const std::optional<fs::path>& 
   const MedyanImport result = importMedyan(system_file, chemistry_file);
   if (fs::exists(output) && !overwrite)
     throw InputError(fmt::format("{}: exists (give --overwrite to replace it)", output.string()));
-  writeFileAtomically(output, result.toml);
+  try {
+    writeFileAtomically(output, result.toml);
+  } catch (const std::exception& e) {
+    // A folder that does not exist, a folder in the way: the command line's doing.
+    throw InputError(fmt::format("{}: cannot write the config there: {}", output.string(), e.what()));
+  }
   if (!quiet) {
     std::cout << "Translated (" << result.translated.size() << "):\n";
     for (const auto& t : result.translated) std::cout << "  " << t << '\n';

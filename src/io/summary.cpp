@@ -1,7 +1,7 @@
 #include "io/summary.hpp"
 
 #include <cmath>
-
+#include <numeric>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -99,12 +99,18 @@ nlohmann::json summarize(System& system, const RunInfo& info) {
       }
     energy["total"] = total;
     const MeshGeometry g = m->currentGeometry();
+    // Copies of each membrane species on it (the same totals as chemistry.species).
+    json species = json::object();
+    for (std::size_t j = 0; j < m->speciesNames().size(); ++j) {
+      const std::vector<int>& copies = m->speciesCopies()[j];
+      species[m->speciesNames()[j]] = std::accumulate(copies.begin(), copies.end(), std::int64_t{0});
+    }
     json entry = {{"name", m->name()},
                   {"vertices", m->mesh().numVertices()},
                   {"triangles", m->mesh().numFaces()},
                   {"area", g.area},
                   {"energy", energy},
-                  {"species", json::object()}};
+                  {"species", species}};
     const MeshQuality q = measureQuality(m->mesh());
     entry["quality"] = {{"min_angle_deg", q.min_angle_deg},
                         {"max_aspect_ratio", q.max_aspect_ratio},

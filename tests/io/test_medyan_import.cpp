@@ -265,6 +265,21 @@ TEST(MedyanImport, InvalidInputNamesFileAndLine) {
                    "SPECIESDIFFUSING: A 10 1e6 0 0 REG\nSPECIESPLUSEND: P 0\n"
                    "POLYMERIZATIONREACTION: 0 A:DIFFUSING P:PLUSEND -> A:DIFFUSING 1\n",
                    "chem.txt:3: POLYMERIZATIONREACTION: expected '->'");
+  // Values that translated to configs `cortex check` then refused, naming the written
+  // TOML's lines (exit 0 from the import), or to another model (0 sites per cylinder
+  // became a site on every monomer: 169 bound linkers in 1 s against 8).
+  const std::string species = "SPECIESDIFFUSING: A 10 1e6 0 0 REG\n";
+  expectInputError(std::string(kGeometry) + "RUNTIME: -1\n", species, "system.txt:7: RUNTIME -1: must be > 0 s");
+  expectInputError(std::string(kGeometry) + "SNAPSHOTTIME: 0\n", species, "system.txt:7: SNAPSHOTTIME 0: must be > 0 s");
+  expectInputError(std::string(kGeometry) + "MINIMIZATIONTIME: 0\n", species,
+                   "system.txt:7: MINIMIZATIONTIME 0: must be > 0 s");
+  expectInputError(std::string(kGeometry) + "MONOMERSIZE: 0\n", species, "system.txt:7: MONOMERSIZE 0: must be > 0 nm");
+  expectInputError(std::string(kGeometry) + "NUMBINDINGSITES: 0\n", species,
+                   "system.txt:7: NUMBINDINGSITES 0: a cylinder of 40 monomers holds 1 to 40 binding sites");
+  // What no keyword check catches is caught in the translated config, before writing.
+  expectInputError("NX: 100000000\nNY: 1\nNZ: 1\nCOMPARTMENTSIZEX: 500\nCOMPARTMENTSIZEY: 500\nCOMPARTMENTSIZEZ: 500\n",
+                   species, "they translate to a config cortex cannot run (the translated config:");
+  expectInputError(kGeometry, "", "compartments: has no effect without [[species]]");
   Files missing(kGeometry, "");
   EXPECT_THROW(importMedyan(missing.dir / "nonexistent.txt", std::nullopt), InputError);
   EXPECT_THROW(importMedyan(missing.system, std::nullopt), InputError);  // no CHEMISTRYFILE
@@ -290,6 +305,17 @@ TEST(MedyanImport, CommandWritesAConfigThatCheckAccepts) {
                                        files.dir.path());
   EXPECT_EQ(bad.exit_code, 2) << cli_test::describe(bad);
   EXPECT_NE(bad.err.find("system.txt:2:"), std::string::npos) << bad.err;
+  // An output path that cannot be written is the command line's error (exit 2), not a
+  // failed run (exit 1).
+  writeFile(files.system, kSystemColon);
+  for (const std::filesystem::path& to : {files.dir / "no-such-folder" / "x.toml", files.dir.path()}) {
+    const auto unwritable = cli_test::runCortex(
+        {"import-medyan", files.system.string(), files.chemistry.string(), "-o", to.string(), "--overwrite"},
+        files.dir.path());
+    EXPECT_EQ(unwritable.exit_code, 2) << cli_test::describe(unwritable);
+    EXPECT_NE(unwritable.err.find(to.string() + ": cannot write the config there"), std::string::npos)
+        << cli_test::describe(unwritable);
+  }
 }
 
 // The repository's translated example (examples/medyan/) stays importable and valid.

@@ -24,7 +24,7 @@ def add_arguments(p):
     common.add_runs_over_time(p, "PNG to write (no plot without it)")
     common.add_membrane(p)
     p.add_argument("--species", help="membrane species (default: the membrane's only one)")
-    p.add_argument("--split", type=float, help="x (nm) past which copies count (default: the membrane's mid-x)")
+    p.add_argument("--split", type=common.finite_float, help="x (nm) past which copies count (default: the membrane's mid-x)")
 
 
 def table(outdir, membrane_name, species_name, split):

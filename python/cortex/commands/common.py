@@ -1,6 +1,7 @@
 """Flags every command spells the same way, and the look-ups behind them."""
 
 import argparse
+import math
 import os
 
 from .. import geometry, plotting
@@ -15,8 +16,10 @@ def add_outdirs(parser, many):
         parser.add_argument("outdir", help="cortex output folder (or its trajectory.h5)")
 
 
-def add_out(parser, what):
-    parser.add_argument("-o", "--out", metavar="FILE", help=what)
+def add_out(parser, what, image=True):
+    """-o FILE; a picture's name must end in a format matplotlib writes (image=False: the
+    command checks it, as `movie` does for its MP4)."""
+    parser.add_argument("-o", "--out", metavar="FILE", help=what, type=image_file if image else str)
 
 
 def add_snapshot(parser, default):
@@ -39,16 +42,59 @@ def add_runs_over_time(parser, what):
 
 def add_membrane(parser):
     parser.add_argument("--membrane", metavar="NAME", help="membrane name (default: every membrane "
-                        "where a picture can hold several, else the first)")
+                        "where a picture can hold several, else the first in the run's config)")
+
+
+# Types of numeric and file flags (argparse `type=`): a value that makes no sense is
+# refused while the command line is parsed, with exit code 2 and a message naming the
+# flag, before any run is read; float() alone accepts nan and inf, and numpy or
+# matplotlib fail on zero or negative counts and sizes with a traceback, or silently
+# compute nothing (`--split nan` counts no copy past the barrier).
+
+def finite_float(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"'{text}': expected a finite number")
+    return value
+
+
+def positive_float(text):
+    value = finite_float(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"'{text}': expected a number > 0")
+    return value
+
+
+def positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"'{text}': expected a whole number >= 1")
+    return value
+
+
+def image_file(path):
+    """A picture's file name: its extension picks the format, so it must be one matplotlib
+    writes (without one, matplotlib would write FILE.png instead of FILE)."""
+    formats = plotting.image_formats()
+    if os.path.splitext(path)[1][1:].lower() not in formats:
+        raise argparse.ArgumentTypeError(f"'{path}': expected a picture file ending in "
+                                         + ", ".join(f".{f}" for f in sorted(formats)))
+    return path
 
 
 def size_pair(spec):
     """--size W[,H] in inches; H = W when one number is given."""
     try:
-        values = [float(v) for v in spec.split(",")]
-    except ValueError:
+        values = [positive_float(v) for v in spec.split(",")]
+    except argparse.ArgumentTypeError:
         values = []
-    if len(values) not in (1, 2) or min(values) <= 0:
+    if len(values) not in (1, 2):
         raise argparse.ArgumentTypeError(f"'{spec}': expected W or W,H in inches, e.g. 4 or 6,4")
     return values[0], values[-1]
 
@@ -56,7 +102,7 @@ def size_pair(spec):
 def add_figure(parser, size, dpi):
     parser.add_argument("--size", type=size_pair, default=size, metavar="W[,H]",
                         help=f"panel size in inches (default {size})")
-    parser.add_argument("--dpi", type=int, default=dpi, help=f"resolution (default {dpi})")
+    parser.add_argument("--dpi", type=positive_int, default=dpi, help=f"resolution (default {dpi})")
 
 
 def open_run(outdir):

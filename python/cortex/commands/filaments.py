@@ -29,15 +29,15 @@ def add_arguments(p):
     p.add_argument("--box", help="axis limits xmin,ymin,zmin,xmax,ymax,zmax in nm (default: the beads' extent)")
     p.add_argument("--views", type=int, default=1, choices=(1, 2), help="1: oblique; 2: oblique + along --axis")
     p.add_argument("--axis", default="z", choices=("x", "y", "z"), help="viewing axis of the second view")
-    p.add_argument("--elev", type=float, default=22.0, help="view elevation in degrees (default 22)")
-    p.add_argument("--azim", type=float, default=-55.0, help="view azimuth in degrees (default -55)")
+    p.add_argument("--elev", type=common.finite_float, default=22.0, help="view elevation in degrees (default 22)")
+    p.add_argument("--azim", type=common.finite_float, default=-55.0, help="view azimuth in degrees (default -55)")
     p.add_argument("--wall", action="append", metavar="AXIS=VALUE",
                    help="draw a translucent wall plane, e.g. z=1000 (nm; repeatable)")
     p.add_argument("--no-linkers", action="store_true", help="leave out cross-linkers")
     p.add_argument("--no-motors", action="store_true", help="leave out motors")
     p.add_argument("--ends", action="store_true", help="mark plus ends with dots")
-    p.add_argument("--lw", type=float, default=0.8, help="filament line width")
-    p.add_argument("--zoom", type=float, default=1.2, help="3D axes zoom (default 1.2)")
+    p.add_argument("--lw", type=common.positive_float, default=0.8, help="filament line width")
+    p.add_argument("--zoom", type=common.positive_float, default=1.2, help="3D axes zoom (default 1.2)")
     p.add_argument("--title", help="figure title")
 
 

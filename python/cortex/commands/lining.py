@@ -37,8 +37,8 @@ RUFFLE_DEGREE = 4  # spherical harmonics up to this degree are the whole-body sh
 def add_arguments(p):
     common.add_runs_over_time(p, "PNG of the near fraction to write (no plot without it)")
     common.add_membrane(p)
-    p.add_argument("--within", type=float, default=50.0, help="distance from the membrane, nm (default 50)")
-    p.add_argument("--bump", type=float, default=10.0,
+    p.add_argument("--within", type=common.positive_float, default=50.0, help="distance from the membrane, nm (default 50)")
+    p.add_argument("--bump", type=common.positive_float, default=10.0,
                    help="height outside the whole-body shape that makes a bump, nm (default 10)")
 
 

@@ -30,8 +30,8 @@ def add_arguments(p):
     common.add_figure(p, "14,3.6", 100)
     common.add_membrane(p)
     p.add_argument("--species", help="membrane species (default: the membrane's only one)")
-    p.add_argument("--from", dest="start", type=float, help="pool snapshots from this time (s) [a fifth of the run]")
-    p.add_argument("--bins", type=int, default=6, help="bins of phi over [0, 1] [6]")
+    p.add_argument("--from", dest="start", type=common.finite_float, help="pool snapshots from this time (s) [a fifth of the run]")
+    p.add_argument("--bins", type=common.positive_int, default=6, help="bins of phi over [0, 1] [6]")
     p.add_argument("--labels", metavar="LIST", help="comma-separated labels, one per run [h]")
     p.add_argument("--csv", metavar="FILE", help="also write the distributions as CSV (run column first)")
     p.add_argument("--title", help="figure title")
@@ -110,12 +110,14 @@ def run(args):
     results = [distribution(d, args.membrane, args.species, args.start, args.bins) for d in args.outdir]
     labels = (common.run_labels(args) if args.labels
               else [f"h = {r['height']:g} kT" for r in results])
-    print(f"# area fraction phi = n A_p / |C|, area-weighted, pooled over "
-          f"{results[0]['snapshots']} snapshots from t = {results[0]['start']:g} s")
-    print(f"{'run':>16} {'h (kT)':>7} {'mean phi':>9} {'area phi>=0.5':>14} {'copies there':>13} {'separated':>10}")
+    # Each run is pooled over its own snapshots (its --from default is a fifth of its
+    # own length, and runs may have stopped at different times): a column per run.
+    print("# area fraction phi = n A_p / |C|, area-weighted, pooled over each run's snapshots from t = 'from (s)' on")
+    print(f"{'run':>16} {'h (kT)':>7} {'mean phi':>9} {'area phi>=0.5':>14} {'copies there':>13} {'separated':>10} "
+          f"{'snapshots':>9} {'from (s)':>9}")
     for label, r in zip(labels, results):
         print(f"{label:>16} {r['height']:7.3f} {r['mean']:9.3f} {r['dense_area']:14.3f} {r['dense_copies']:13.3f} "
-              f"{'yes' if r['separated'] else 'no':>10}")
+              f"{'yes' if r['separated'] else 'no':>10} {r['snapshots']:9d} {r['start']:9.4g}")
     h0 = onset(results)
     print("onset of phase separation: " + (f"h = {h0:g} kT" if h0 is not None else "none of these runs"))
     if args.csv:

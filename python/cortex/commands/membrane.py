@@ -32,10 +32,10 @@ def add_arguments(p):
                    help="1: one oblique view; 3: oblique, side and top views (one panel only)")
     p.add_argument("--align", action="store_true",
                    help="rotate into the principal axes of the vertex cloud (longest along x, shortest along z)")
-    p.add_argument("--clim", type=float, help="colour limit |H| in 1/nm (default: 99th percentile of |H|)")
+    p.add_argument("--clim", type=common.positive_float, help="colour limit |H| in 1/nm (default: 99th percentile of |H|)")
     p.add_argument("--cmap", default="RdBu", help="diverging colormap, low = red (default RdBu)")
-    p.add_argument("--elev", type=float, default=20.0, help="view elevation in degrees (default 20)")
-    p.add_argument("--azim", type=float, default=-60.0, help="view azimuth in degrees (default -60)")
+    p.add_argument("--elev", type=common.finite_float, default=20.0, help="view elevation in degrees (default 20)")
+    p.add_argument("--azim", type=common.finite_float, default=-60.0, help="view azimuth in degrees (default -60)")
     p.add_argument("--edges", action="store_true", help="draw the mesh edges")
     p.add_argument("--info", action="store_true",
                    help="print area, volume, reduced volume, principal semi-axes and a shape class; "

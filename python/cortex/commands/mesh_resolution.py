@@ -22,10 +22,10 @@ def add_arguments(p):
     common.add_snapshot(p, "last")
     common.add_membrane(p)
     common.add_figure(p, "5.5,3.6", 90)
-    p.add_argument("--mesh-size", type=float, default=60.0, help="the membrane's mesh_size in nm (default 60)")
-    p.add_argument("--min-size", type=float, help="remesher's min_size (default mesh-size/4)")
-    p.add_argument("--max-size", type=float, help="remesher's max_size (default 2 mesh-size)")
-    p.add_argument("--tolerance", type=float, help="remesher's curvature tolerance eps (default mesh-size/120)")
+    p.add_argument("--mesh-size", type=common.positive_float, default=60.0, help="the membrane's mesh_size in nm (default 60)")
+    p.add_argument("--min-size", type=common.positive_float, help="remesher's min_size (default mesh-size/4)")
+    p.add_argument("--max-size", type=common.positive_float, help="remesher's max_size (default 2 mesh-size)")
+    p.add_argument("--tolerance", type=common.positive_float, help="remesher's curvature tolerance eps (default mesh-size/120)")
 
 
 def run(args):

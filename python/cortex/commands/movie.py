@@ -33,24 +33,24 @@ MONTAGE_PANELS = 25
 
 def add_arguments(p):
     common.add_outdirs(p, many=False)
-    common.add_out(p, "MP4 to write (default OUTDIR/movie.mp4; a montage is written as .png)")
+    common.add_out(p, "MP4 to write (default OUTDIR/movie.mp4; a montage is written as .png)", image=False)
     common.add_snapshot(p, "all")
     common.add_membrane(p)
     common.add_figure(p, "5", 100)
-    p.add_argument("--fps", type=float, default=10.0, help="frames per second (default 10)")
+    p.add_argument("--fps", type=common.positive_float, default=10.0, help="frames per second (default 10)")
     p.add_argument("--montage", action="store_true", help="write a PNG grid of snapshots instead of an MP4")
-    p.add_argument("--clim", type=float,
+    p.add_argument("--clim", type=common.positive_float,
                    help="colour limit |H| in 1/nm (default: the largest 99th percentile of |H| of a snapshot)")
     p.add_argument("--cmap", default="RdBu", help="diverging colormap, low = red (default RdBu)")
-    p.add_argument("--elev", type=float, default=20.0, help="view elevation in degrees (default 20)")
-    p.add_argument("--azim", type=float, default=-60.0, help="view azimuth in degrees (default -60)")
+    p.add_argument("--elev", type=common.finite_float, default=20.0, help="view elevation in degrees (default 20)")
+    p.add_argument("--azim", type=common.finite_float, default=-60.0, help="view azimuth in degrees (default -60)")
     p.add_argument("--cutaway", action="store_true",
                    help="leave out the near half of each membrane (the triangles between its centre and "
                         "the viewer), to see filaments inside a vesicle")
-    p.add_argument("--columns", type=int,
+    p.add_argument("--columns", type=common.positive_int,
                    help="panels per row of a montage (default: a square grid); 3 snapshots of a long "
                         "shape read best in one row")
-    p.add_argument("--zoom", type=float, default=1.25,
+    p.add_argument("--zoom", type=common.positive_float, default=1.25,
                    help="3D axes zoom (default 1.25; below 1 when a long shape leaves the frame)")
 
 
@@ -160,10 +160,6 @@ def montage(scene, out, args):
 
 
 def run(args):
-    if args.fps <= 0:
-        raise CortexError(f"--fps {args.fps:g}: must be positive")
-    if args.columns is not None and args.columns < 1:
-        raise CortexError(f"--columns {args.columns}: must be at least 1")
     r = common.open_run(args.outdir)
     scene = Scene(r, common.snapshot_indices(r, args.snapshot), args)
     out = args.out or common.default_out(r, "movie.mp4")

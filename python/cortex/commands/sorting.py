@@ -26,7 +26,7 @@ def add_arguments(p):
     common.add_outdirs(p, many=False)
     common.add_out(p, "PNG to write (no plot without it)")
     common.add_figure(p, "5,3.6", 100)
-    p.add_argument("--from", dest="start", type=float, help="average snapshots from this time (s) [half the run]")
+    p.add_argument("--from", dest="start", type=common.finite_float, help="average snapshots from this time (s) [half the run]")
     p.add_argument("--title", help="figure title")
 
 
@@ -79,6 +79,12 @@ def table(outdir, start):
         rows.append([name, species, H, density * 1e6, np.exp(-energy)])
     reference = min(rows, key=lambda r: abs(r[2]))
     density0, predicted0 = reference[3], reference[4]
+    if density0 == 0.0:
+        # Nothing bound on the reference (its binding switched off, or a run stopped at
+        # snapshot 0): every other density would be infinitely enriched.
+        raise CortexError(f"{run.trajectory_path}: no copies of '{reference[1]}' on the least curved membrane "
+                          f"'{reference[0]}' in the {len(used)} snapshot(s) from t = {start:g} s: "
+                          "densities relative to it are undefined")
     for r in rows:
         r.append(r[3] / density0)
         r[4] = r[4] / predicted0
