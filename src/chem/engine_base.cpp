@@ -336,8 +336,9 @@ void EngineBase::setSurface(Index surface, const SubvolumeGraph& graph, const st
       interacts_[s] = 0;
       paired_[s] = 0;
       couplings_[s].clear();
-      for (Index& u : unbinding_)
-        if (u == s) u = -1;
+      for (std::vector<Index>* list : {&unbinding_, &binding_})
+        for (Index& u : *list)
+          if (u == s) u = -1;
     }
   layOut(region, copies);
   relaidOut();

@@ -105,16 +105,25 @@ class EngineBase : public ChemistryEngine {
 
   // Whether copies of s interact (setSurfaceInteraction).
   bool interacting(Index s) const { return interacts_[s] != 0; }
-  // e^{V_i + R_i − K_ii + a_i(N_i − 1)}: the factor on the unbinding of interacting species
-  // s from surface subvolume i (the energy its copy leaves behind), the energy capped at
-  // kLargestUnbindingEnergy.
+  // The energy (k_BT) of a copy of interacting species s leaving surface subvolume i,
+  // V_i + R_i − K_ii + a_i(N_i − 1), with `added` more copies there than now (0: a copy
+  // unbinding now; 1: the copy a binding would bring).
+  double leavingEnergy(Index i, Index s, int added) const;
+  // e^{βV} of the copy unbinding from i, V = leavingEnergy(i, s, 0) capped at
+  // kLargestUnbindingEnergy; the rest of V goes to binding (energyAccepts).
   double unbindingFactor(Index i, Index s) const;
-  // k_BT. Binding is not weighted by the energy a copy arrives at (thesis eq. 3.14), so a
-  // copy binds at the plain rate into a cell it can hardly share (a second protein larger
-  // than the cell: ~800 k_BT of curvature energy) and leaves at r e^{800}, an infinite rate
-  // that stopped the run. Capped at 10⁶ r (as the filaments' force-dependent factors), such
-  // a copy leaves within ~1/(10⁶ r), and states this far above their neighbours are
-  // occupied ~10⁻⁶ of the time instead of e^{-βV} (docs/proteins.md).
+  // Binding reaction r into surface subvolume i, where the copy would have a leaving
+  // energy V over kLargestUnbindingEnergy: accepted with probability
+  // e^{−(βV − kLargestUnbindingEnergy)}, exact thinning (a void event otherwise). Draws a
+  // random number only then, so runs that never meet such a state draw the same numbers.
+  bool energyAccepts(Index r, Index i);
+  // k_BT. Eq. 3.14 puts a copy's whole energy on its unbinding, r e^{βV}, and binds at the
+  // plain rate: a copy binding into a cell it can hardly share (a second protein larger
+  // than the cell: ~800 k_BT of curvature energy) would leave at r e^{800}, an infinite
+  // rate that stopped the run. Above this energy the excess weighs binding instead:
+  // unbinding at most 10⁶ r, binding into the state thinned by e^{−excess}. The ratio of
+  // the two, hence detailed balance and every equilibrium, is eq. 3.14's; only how fast
+  // such states are entered and left differs (docs/proteins.md).
   static constexpr double kLargestUnbindingEnergy = 13.815510557964274;  // ln 10⁶
   // Whether the field of interacting species u reads the copies of s (u is s or coupled
   // to it, setSurfaceCoupling).
@@ -128,6 +137,9 @@ class EngineBase : public ChemistryEngine {
   std::size_t interactionFieldsChanged() const { return near_.size(); }
   // Per reaction: the interacting species it unbinds, −1 for none; empty if none does.
   std::vector<Index> unbinding_;
+  // Per reaction: the interacting species it binds (one copy from 3D species), −1 for
+  // none; empty if none does.
+  std::vector<Index> binding_;
   // After copies of interacting species s changed in subvolumes a and b (a hop a → b, or
   // a == b): recomputes the field R around them and the hop rates that read it (each a
   // pure function of the copies, so a restored engine gets the same numbers). Returns the

@@ -39,13 +39,14 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
   if (species < 0 || species >= S_) throw std::out_of_range("chemistry engine: no species " + std::to_string(species));
   const Index region = net_.speciesRegion[species];
   if (region == 0) throw std::invalid_argument("chemistry engine: only surface species interact");
-  std::vector<Index> unbinds;
+  std::vector<Index> unbinds, binds;
   for (Index r = 0; r < R_; ++r) {
     int own = 0, others = 0;
     for (const SpeciesChange& change : net_.changes[r]) {
       if (change.species == species) own = change.delta;
       else if (!change.held) ++others;
     }
+    if (own == 1 && others == 0) binds.push_back(r);  // an adsorption of one copy
     if (own >= 0 || others > 0) continue;  // not a desorption: mass action
     const ReactionKernel& k = net_.kernels[r];
     if (k.kind != ReactionKernel::Kind::kLinear || k.a != species || own != -1)
@@ -76,6 +77,8 @@ void EngineBase::setSurfaceInteraction(Index species, SurfaceInteraction interac
     for (double x : *terms) paired_[species] = paired_[species] || x != 0.0;
   if (!unbinds.empty() && unbinding_.empty()) unbinding_.assign(R_, -1);
   for (Index r : unbinds) unbinding_[r] = species;
+  if (!binds.empty() && binding_.empty()) binding_.assign(R_, -1);
+  for (Index r : binds) binding_[r] = species;
   computeHopRates();
   for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
 }
@@ -99,12 +102,22 @@ void EngineBase::setSurfaceCoupling(Index a, Index b, std::vector<double> self, 
   for (Index i = region_start_[region]; i < region_start_[region + 1]; ++i) refreshSubvolume(i);
 }
 
-double EngineBase::unbindingFactor(Index i, Index s) const {
+double EngineBase::leavingEnergy(Index i, Index s, int added) const {
   const SurfaceInteraction& k = interaction_[s];
   const Index a = i - region_start_[net_.speciesRegion[s]];
-  const int n = copies_[static_cast<std::size_t>(i) * S_ + s];
-  const double energy = k.potential[a] + field_[s][a] - k.self[a] + arrivalEnergy(s, a, std::max(n - 1, 0));
-  return std::exp(std::min(energy, kLargestUnbindingEnergy));
+  const int n = copies_[static_cast<std::size_t>(i) * S_ + s] + added;
+  // The field counts every copy in i, the leaving one's self term K_ii included.
+  return k.potential[a] + field_[s][a] + (added - 1) * k.self[a] + arrivalEnergy(s, a, std::max(n - 1, 0));
+}
+
+double EngineBase::unbindingFactor(Index i, Index s) const {
+  return std::exp(std::min(leavingEnergy(i, s, 0), kLargestUnbindingEnergy));
+}
+
+bool EngineBase::energyAccepts(Index r, Index i) {
+  if (binding_.empty() || binding_[r] < 0) return true;
+  const double excess = leavingEnergy(i, binding_[r], 1) - kLargestUnbindingEnergy;
+  return !(excess > 0.0) || rng_.uniform() < std::exp(-excess);
 }
 
 double EngineBase::arrivalEnergy(Index s, Index a, int m) const {

@@ -64,6 +64,11 @@ class FilamentChemistry final : public ReactionHook {
   // counts the monomers' concentration in that part). Unset: anywhere in the compartment.
   using Side = std::function<bool(const Vec3&)>;
   void setNucleationSide(Index type, Side side);
+  // Whether a straight nucleus between two points would pass through a body no filament
+  // crosses (a membrane): such a nucleus is a void event (thinning by the small share of
+  // placements that straddle it), as one outside the boundary is. Unset: none.
+  using Blocked = std::function<bool(const Vec3&, const Vec3&)>;
+  void setNucleationBlocked(Blocked blocked) { nucleation_blocked_ = std::move(blocked); }
 
   // Ratchet factor of filament f's end (1 = unloaded) and the load behind it (pN).
   double ratchetFactor(Index f, bool plus_end) const { return ratchet_[f][plus_end ? 1 : 0]; }
@@ -128,6 +133,7 @@ class FilamentChemistry final : public ReactionHook {
   RateFactors factors_;  // and their rate factors in the engine (once attached)
   Walls walls_;  // where nuclei may form
   std::vector<Side> nucleation_side_;  // per filament type, empty if unconfined
+  Blocked nucleation_blocked_;
   double kT_;
   std::vector<Index> monomer_species_;  // per filament type, -1 if none
   std::vector<Channel> channels_;

@@ -127,6 +127,7 @@ bool FilamentChemistry::fireNucleation(const Channel& ch, Index c, RandomStream&
     // Nucleation happens only inside the boundary: thinning by the fraction of the
     // compartment (or of its part on the monomers' side) that lies inside.
     if (!walls_.contains(f.beads.front()) || !walls_.contains(f.beads.back())) return false;
+    if (nucleation_blocked_ && nucleation_blocked_(f.beads.front(), f.beads.back())) return false;
     addNew(net_.addFilament(std::move(f)));
     return true;
   }

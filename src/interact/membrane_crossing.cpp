@@ -15,6 +15,17 @@ std::string MembraneCrossing::describe(const Membrane& membrane) const {
                      membrane.name(), face);
 }
 
+bool segmentMeetsMembrane(const Membrane& membrane, const Vec3& p, const Vec3& q) {
+  const auto& x = membrane.mesh().positions();
+  const Eigen::AlignedBox3d segment(p.cwiseMin(q), p.cwiseMax(q));
+  for (const Tri& t : membrane.topology().triangles) {
+    Eigen::AlignedBox3d box(x[t[0]]);
+    box.extend(x[t[1]]).extend(x[t[2]]);
+    if (box.intersects(segment) && segmentMeetsTriangle(p, q, x[t[0]], x[t[1]], x[t[2]])) return true;
+  }
+  return false;
+}
+
 std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, const FilamentNetwork& network) {
   const auto& x = membrane.mesh().positions();
   const auto& triangles = membrane.topology().triangles;

@@ -22,6 +22,10 @@ struct MembraneCrossing {
 // The first crossing in (filament, cylinder, triangle) order, if any.
 std::optional<MembraneCrossing> findMembraneCrossing(const Membrane& membrane, const FilamentNetwork& network);
 
+// Whether the segment [p, q] meets a triangle of the membrane (every triangle tried: for
+// a rare event, such as placing a nucleus).
+bool segmentMeetsMembrane(const Membrane& membrane, const Vec3& p, const Vec3& q);
+
 // Whether two membranes pass through each other: some edge of one meets a triangle of the
 // other (two meshes that intersect always have such an edge, in one direction or the
 // other). Membranes do not interact, so cortex refuses them at the start and stops a run

@@ -140,7 +140,10 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
   const bool sphere_by_area =
       exact_area && m.targetVolume(t) >= sphereVolumeOfArea(m.targetArea(t)) * (1.0 - 1e-12);
   const bool exact_volume = closed && m.mechanics().volume.exact && !sphere_by_area;
-  if (exact_volume) {
+  const std::vector<EnergyTerm*> terms = field.termsOf(m.name());
+  const TermScales scales = scalesOf(m, terms);
+  // Held exactly or by a penalty (a soft penalty also sat at the sphere, a saddle).
+  if (exact_volume || (closed && scales.volume_stiffness > 0)) {
     const MeshGeometry g = m.currentGeometry();
     const double v0 = g.volume / sphereVolumeOfArea(g.area);
     if (v0 > kNearSphere && m.targetVolume(t) / sphereVolumeOfArea(m.targetArea(t)) < v0 - 1e-3) {
@@ -149,8 +152,6 @@ ShapeRelaxationReport relaxMembraneShape(Membrane& m, ForceField& field, double 
                     "ellipsoidal mode to break the mesh's symmetry", m.name(), v0, kKickAmplitude);
     }
   }
-  const std::vector<EnergyTerm*> terms = field.termsOf(m.name());
-  const TermScales scales = scalesOf(m, terms);
   const double area_target = m.targetArea(t), volume_target = closed ? m.targetVolume(t) : 0.0;
   MembraneEquilibrium equilibrium = m.equilibrium();
   double& moved_since_remesh = equilibrium.strain_since_remesh;
