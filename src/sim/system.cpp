@@ -196,17 +196,17 @@ void System::buildChemistry(const Config& config, const SystemState* restored, c
     probes.push_back(cylinder_loads_.get());
     end_load_sum_ = std::make_unique<EndLoadSum>(std::move(probes));
     filament_chemistry_->setEndLoadProbe(end_load_sum_.get());
-    // Nuclei form where their monomers live: on the side of the membrane that confines
-    // them (nuclei placed anywhere in the compartment grew filaments outside a vesicle
-    // whose inside alone held the monomers, exit 0).
-    // And never through a membrane the filaments push on (a dimer placed straddling it
-    // stopped the run as a crossing).
+    // Nuclei never form through a membrane the filaments push on (a dimer placed
+    // straddling it stopped the run as a crossing) ...
     if (!coupling_terms_.empty())
       filament_chemistry_->setNucleationBlocked([this](const Vec3& p, const Vec3& q) {
         for (const MembraneBeadExclusion* term : coupling_terms_)
           if (segmentMeetsMembrane(term->membrane(), p, q)) return true;
         return false;
       });
+    // ... and form where their monomers live: on the side of the membrane that confines
+    // them (nuclei placed anywhere in the compartment grew filaments outside a vesicle
+    // whose inside alone held the monomers, exit 0).
     for (std::size_t t = 0; t < config.filaments->types.size(); ++t) {
       const Index g = config.filaments->types[t].monomer_species_index;
       if (g < 0 || cc.sides[g].membrane.empty()) continue;
