@@ -92,7 +92,7 @@ void DirectMethodEngine::fire(std::size_t channel) {
     const Index carrier = static_cast<Index>(channel / R_), r = static_cast<Index>(channel % R_);
     // An aggregated reaction fires in one of the surface subvolumes its carrier holds.
     const Index i = aggregated(r) ? drawBindingSite(carrier, r) : carrier;
-    if (i < 0 || !capAccepts(r, i) || !energyAccepts(r, i) || !hookAccepts(r, i)) return;  // void event (thinning)
+    if (i < 0 || !accepts(r, i)) return;  // void event (thinning): nothing changes
     for (const SpeciesChange& change : net_.changes[r]) {
       const Index at = change.held ? holder_[i] : i;
       int& n = copies_[static_cast<std::size_t>(at) * S_ + change.species];

@@ -117,6 +117,10 @@ class EngineBase : public ChemistryEngine {
   // e^{−(βV − kLargestUnbindingEnergy)}, exact thinning (a void event otherwise). Draws a
   // random number only then, so runs that never meet such a state draw the same numbers.
   bool energyAccepts(Index r, Index i);
+  // Whether reaction r, drawn in subvolume i, is carried out: the crowding cap, then the
+  // energy's share of binding, then r's hook (each may void it; this order fixes which
+  // random numbers are drawn, in both engines).
+  bool accepts(Index r, Index i) { return capAccepts(r, i) && energyAccepts(r, i) && hookAccepts(r, i); }
   // k_BT. Eq. 3.14 puts a copy's whole energy on its unbinding, r e^{βV}, and binds at the
   // plain rate: a copy binding into a cell it can hardly share (a second protein larger
   // than the cell: ~800 k_BT of curvature energy) would leave at r e^{800}, an infinite

@@ -207,7 +207,7 @@ void NextSubvolumeEngine::fire(Index i, double t) {
     // void event (thinning): nothing changes.
     if (r >= 0 && aggregated(r)) {
       fired = fireBinding(i, r);
-    } else if (r >= 0 && capAccepts(r, i) && energyAccepts(r, i) && hookAccepts(r, i)) {
+    } else if (r >= 0 && accepts(r, i)) {
       react(i, r);
       fired = true;
     }
@@ -295,7 +295,7 @@ void NextSubvolumeEngine::react(Index i, Index r) {
 // surface subvolumes h holds, drawn by its weight (there its cap and hook decide).
 bool NextSubvolumeEngine::fireBinding(Index h, Index r) {
   const Index j = drawBindingSite(h, r);
-  if (j < 0 || !capAccepts(r, j) || !energyAccepts(r, j) || !hookAccepts(r, j)) return false;  // a void event
+  if (j < 0 || !accepts(r, j)) return false;  // a void event
   changeHeld(h, r);  // h is firing: no rescaling
   // Binding changes only surface species of j: nothing cascades to other subvolumes.
   changeSubvolume(j, [&] { changeLocally(j, r); });

@@ -23,7 +23,7 @@ int FilamentNetwork::spacing(BinderKind kind, Index type) const {
       const MotorType& m = config_.motors[type];
       // Motors step from site to site: their lattice is their step, in whole monomers of
       // the filaments they walk on (all types share the first type's monomer size).
-      return std::max(1, static_cast<int>(std::lround(m.step_size / config_.types.front().monomer_size)));
+      return std::max(1, m.stepMonomers(config_.types.front().monomer_size));
     }
     case BinderKind::kBrancher:
       return config_.branchers[type].site_spacing;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -112,6 +113,10 @@ struct MotorType {
   int heads_min = 0, heads_max = 0;
   double head_binding_rate = 0.2;  // 1/s, k_h: one head's attachment rate
   double head_load = 2.0;          // 1/pN, beta: heads recruited per unit load and head
+
+  // The step in whole monomers of size `monomer_size` (nm), rounded; 0 for a step under
+  // half a monomer, which the config refuses.
+  int stepMonomers(double monomer_size) const { return static_cast<int>(std::lround(step_size / monomer_size)); }
 };
 
 // Arp2/3: a diffusing complex that, with one monomer from the pool, binds a site on a

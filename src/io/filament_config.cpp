@@ -380,7 +380,7 @@ std::optional<FilamentConfig> readFilaments(const ConfigReader& root, const std:
     // Steps are whole monomers of the first type (FilamentNetwork::spacing): one that
     // rounds to none was taken as one, 2.7 times (or 2,700 times) the step asked for.
     const double monomer = f.types.front().monomer_size;
-    if (std::lround(f.motors.back().step_size / monomer) < 1)
+    if (f.motors.back().stepMonomers(monomer) < 1)
       motors[i].fail("step_size", fmt::format("{:g} nm rounds to no monomer of {:g} nm (filament_type.0's "
                                               "monomer_size); a motor steps whole monomers: at least {:g} nm",
                                               f.motors.back().step_size, monomer, 0.5 * monomer));

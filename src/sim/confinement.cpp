@@ -127,8 +127,9 @@ std::optional<std::string> insideBeyondGrid(const std::vector<std::unique_ptr<Me
                                             const CompartmentGrid& grid, const std::vector<SpeciesSide>& sides,
                                             const std::vector<ReactionRestriction>& restrictions,
                                             const std::vector<SpeciesDef>& species, double tolerated) {
+  std::set<std::string> checked;  // several species and reactions may share a membrane
   const auto beyond = [&](const SpeciesSide& side, const std::string& key) -> std::optional<std::string> {
-    if (side.membrane.empty() || side.outside) return std::nullopt;
+    if (side.membrane.empty() || side.outside || !checked.insert(side.membrane).second) return std::nullopt;
     const Membrane& m = membraneNamed(membranes, side.membrane);
     const OutsideGrid out = outsideGrid(m, grid);
     if (out.vertices == 0 || out.area_fraction <= tolerated) return std::nullopt;
@@ -164,8 +165,9 @@ void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& 
     // one partly outside bound into the grid's edge from its whole area while the volume
     // it encloses beyond the grid held nothing (a vesicle with 16% of its volume outside
     // came to a binding equilibrium 18% off, exit 0).
-    const SurfaceMesh& mesh = membraneNamed(membranes, on).mesh();
-    if (const Index outside = outsideGrid(membraneNamed(membranes, on), grid).vertices; outside > 0)
+    const Membrane& membrane = membraneNamed(membranes, on);
+    const SurfaceMesh& mesh = membrane.mesh();
+    if (const Index outside = outsideGrid(membrane, grid).vertices; outside > 0)
       throw InputError(fmt::format("{}: {}: it joins species on membrane \"{}\" with 3D species, but {} of the {} "
                                    "vertices of \"{}\" lie outside the compartment grid (the box from [0, 0, 0] to "
                                    "[{}] nm), where no volume holds species: place the membrane within the grid or "
@@ -175,7 +177,7 @@ void checkSurfaceReactionsCanFire(const std::vector<std::unique_ptr<Membrane>>& 
     const SpeciesSide& side = config.sides[confined];
     if (side.membrane == on) continue;
     const Membrane& wall = closedMembrane(membranes, side.membrane, key);
-    if (someVertexOnSide(membraneNamed(membranes, on).mesh(), wall.mesh(), side.outside)) continue;
+    if (someVertexOnSide(mesh, wall.mesh(), side.outside)) continue;
     const char* where = side.outside ? "outside" : "inside";
     throw InputError(fmt::format(
         "{}: {}: it joins species on membrane \"{}\" with \"{}\", which lives {} membrane \"{}\", but no vertex "
