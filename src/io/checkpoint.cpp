@@ -202,10 +202,10 @@ void writeCheckpoint(const std::filesystem::path& file, const CheckpointHeader& 
   writeFileAtomically(file, bytes);
 }
 
-Checkpoint readCheckpoint(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file))
-    throw InputError(fmt::format("{}: no checkpoint to resume from", file.string()));
-  verifyStamp(file);
+namespace {
+
+// readCheckpoint's body, on a file whose checksum holds.
+Checkpoint readVerifiedCheckpoint(const std::filesystem::path& file) {
   h5::File f = h5::File::openReadOnly(file);
   if (!f.exists("/run") || f.attributeString("/run", "format") != kFormat)
     throw InputError(fmt::format("{}: not a cortex checkpoint (or from an incompatible version)", file.string()));
@@ -224,6 +224,25 @@ Checkpoint readCheckpoint(const std::filesystem::path& file) {
   if (f.exists("/chemistry")) s.chemistry = readChemistry(f);
   if (f.exists("/filaments")) s.filaments = readFilamentState(f, file.string());
   return cp;
+}
+
+}  // namespace
+
+Checkpoint readCheckpoint(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file))
+    throw InputError(fmt::format("{}: no checkpoint to resume from", file.string()));
+  verifyStamp(file);
+  // The checksum catches damage; a file that passes it and still lacks a dataset or an
+  // attribute (edited, or written by another version) is bad input all the same.
+  try {
+    return readVerifiedCheckpoint(file);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("{}: cannot be read as a checkpoint of this version ({}); start again with "
+                                 "--overwrite",
+                                 file.string(), e.what()));
+  }
 }
 
 }  // namespace cortex

@@ -155,6 +155,26 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
                                      other_minimizer));
   m.target_area = r.schedule("target_area", std::nullopt, Range::positive(), "nm^2");
   m.tension.tension = r.schedule("tension", 0.0, any, "pN/nm");
+  // E = γA with γ < 0 is bounded only by an area term: the area held exactly, or a penalty
+  // with a modulus > 0 at that time. Without one the membrane grows without end (the
+  // relaxation failed at once "far from equilibrium", naming no key). Both schedules are
+  // linear between their points, so their points are where to look.
+  if (m.area.model != AreaModel::kExact) {
+    std::vector<double> times;
+    for (const Schedule* s : {&m.tension.tension, &m.area.modulus})
+      for (const auto& point : s->points()) times.push_back(point.first);
+    for (double t : times) {
+      const double gamma = m.tension.tension.at(t);
+      if (!(gamma < 0.0) || (penalty && m.area.modulus.at(t) > 0.0)) continue;
+      const bool constant = m.tension.tension.isConstant() && m.area.modulus.isConstant();
+      r.fail("tension", fmt::format("is negative ({:g} pN/nm{}) with no area term to hold it (area_model = \"{}\"{}): "
+                                    "the energy γA then has no lower bound and the membrane grows without end; "
+                                    "hold the area (area_model = \"exact\", or a penalty with an area_modulus "
+                                    "> 0)",
+                                    gamma, constant ? "" : fmt::format(" at t = {:g} s", t), model,
+                                    penalty ? ", area_modulus 0" : ""));
+    }
+  }
   m.regularization.strength = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
   if (by_shape && !m.regularization.strength.isZero())
     r.fail("mesh_regularization", fmt::format("acts within the surface, which the default relaxation (normal "

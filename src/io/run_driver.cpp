@@ -10,8 +10,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-
 #include <regex>
 
 #include "core/error.hpp"
@@ -132,13 +132,36 @@ void checkResumable(const Config& stored, const Config& now, double checkpoint_t
     refuse("simulation.chemistry_window", "window times are counted from the start of the run");
   if (now.simulation.seed != stored.simulation.seed) refuse("simulation.seed", "the random streams continue");
   if (now.simulation.end_time < checkpoint_time)
-    refuse("simulation.end_time", fmt::format("the checkpoint is at t = {:g} s already", checkpoint_time));
+    throw InputError(fmt::format("--resume: simulation.end_time = {:g} s is before the checkpoint's t = {:g} s; a "
+                                 "resume may keep end_time or extend it, not shorten the run past its checkpoint",
+                                 now.simulation.end_time, checkpoint_time));
   if (now.chemistry.has_value() != stored.chemistry.has_value()) refuse("[[species]]", "the chemistry state is stored");
   if (now.chemistry) {
     const CompartmentGrid &a = now.chemistry->grid, &b = stored.chemistry->grid;
     if (a.size != b.size || a.shape != b.shape) refuse("[compartments]", "copies are stored per compartment");
     if (now.chemistry->engine != stored.chemistry->engine) refuse("chemistry.engine", "engines keep different state");
   }
+}
+
+// A checkpoint's clock and snapshot count against its own config. Its checksum guards
+// against damage only: an edited count of windows ran a 0.5 s run to t = 0.25 s and
+// reported it finished (exit 0), and an edited snapshot count deleted the snapshots or
+// crashed the resume.
+void checkCheckpointConsistent(const Config& stored, const Checkpoint& cp, const std::filesystem::path& file) {
+  const SimulationConfig& sim = stored.simulation;
+  const SystemState& s = cp.state;
+  // As Simulation counts them: windows of chemistry_window from t = 0, the last one cut
+  // at end_time.
+  const auto windows = static_cast<std::int64_t>(std::ceil(sim.end_time / sim.chemistry_window - 1e-9));
+  const double expected = std::min(static_cast<double>(s.step) * sim.chemistry_window, sim.end_time);
+  if (s.step < 0 || s.step > windows || !(s.time == expected))
+    throw InputError(fmt::format("{}: its clock disagrees with its config ({} windows of {:g} s completed, yet "
+                                 "t = {:g} s): edited or damaged; start again with --overwrite",
+                                 file.string(), s.step, sim.chemistry_window, s.time));
+  if (cp.header.next_snapshot < 1)
+    throw InputError(fmt::format("{}: it counts {} snapshots written before it, where a run writes snapshot 0 "
+                                 "before its first checkpoint: edited or damaged; start again with --overwrite",
+                                 file.string(), cp.header.next_snapshot));
 }
 
 // The work since t = 0 and where its time went; `wall` is this session's, which after a
@@ -217,7 +240,9 @@ RunOutcome runSimulation(const RunRequest& request) {
     const std::string source = fmt::format("{} (the config stored in {})", header.config_source,
                                            (outdir / "checkpoint.h5").string());
     config = parseConfig(header.config_toml, source, header.base_dir, overrides);
-    checkResumable(parseConfig(header.config_toml, source, header.base_dir, {}), config, checkpoint->state.time);
+    const Config stored = parseConfig(header.config_toml, source, header.base_dir, {});
+    checkCheckpointConsistent(stored, *checkpoint, outdir / "checkpoint.h5");
+    checkResumable(stored, config, checkpoint->state.time);
     // trajectory.h5 carries the run's id: resuming checks that checkpoint and snapshots
     // are one run's before appending to them.
     if (!std::filesystem::exists(outdir / "trajectory.h5"))

@@ -219,16 +219,20 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
   }
   // The checkpoint continues snapshots 0 .. first_index - 1: a resume without some of them
   // ended with exit 0 and a trajectory silently missing those times.
+  // (Found from the files there, not by listing all first_index names: the count comes
+  // from the checkpoint, which may be edited.)
   if (append && static_cast<std::int64_t>(snapshots_.size()) != first_index) {
-    std::vector<bool> present(static_cast<std::size_t>(first_index), false);
-    for (const XdmfSnapshot& snapshot : snapshots_) present[static_cast<std::size_t>(snapshot.index)] = true;
-    std::vector<std::string> missing;
-    for (std::int64_t i = 0; i < first_index; ++i)
-      if (!present[static_cast<std::size_t>(i)]) missing.push_back(snapshotFile(i));
+    std::vector<std::int64_t> present;
+    for (const XdmfSnapshot& snapshot : snapshots_) present.push_back(snapshot.index);
+    std::sort(present.begin(), present.end());
+    std::int64_t first_missing = 0;
+    while (first_missing < static_cast<std::int64_t>(present.size()) && present[first_missing] == first_missing)
+      ++first_missing;
+    const std::int64_t missing = first_index - static_cast<std::int64_t>(present.size());
     throw InputError(fmt::format("{}: cannot resume the trajectory: {} of the {} snapshot files before the "
                                  "checkpoint are missing ({}{}); put them back, or start again with --overwrite",
-                                 outdir_.string(), missing.size(), first_index, missing.front(),
-                                 missing.size() > 1 ? ", ..." : ""));
+                                 outdir_.string(), missing, first_index, snapshotFile(first_missing),
+                                 missing > 1 ? ", ..." : ""));
   }
   // The XDMF and the table list snapshots in time order (directory order is arbitrary).
   std::vector<std::size_t> order(snapshots_.size());

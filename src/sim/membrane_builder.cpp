@@ -62,6 +62,27 @@ void checkLoadedScale(const SurfaceMesh& mesh, const std::string& where) {
                                  where, edge));
 }
 
+// A membrane is one surface: a file holding two (two vesicles, a vesicle and a stray
+// triangle) was taken as one membrane with one area and one volume, and ran to exit 0
+// with the pair's reduced volume.
+void checkConnected(const SurfaceMesh& mesh, const std::string& where) {
+  std::vector<Index> parent(static_cast<std::size_t>(mesh.numVertices()));
+  for (Index v = 0; v < mesh.numVertices(); ++v) parent[v] = v;
+  const auto root = [&](Index v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Tri& t : mesh.triangles())
+    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
+  Index pieces = 0, stray = -1;
+  for (Index v = 0; v < mesh.numVertices(); ++v)
+    if (root(v) == v && ++pieces == 2) stray = v;
+  if (pieces > 1)
+    throw InputError(fmt::format("{}: the mesh is {} separate pieces (vertex {} is not connected to vertex 0); a "
+                                 "membrane is one connected surface: give each piece its own [[membrane]]",
+                                 where, pieces, stray));
+}
+
 // The generated shape's mesh; a mesh_size too coarse for the shape is named as the key it
 // is (the message named the mesher's function, meshImplicitSurface).
 TriangleSoup generatedMesh(const MembraneConfig& c, const std::string& where) {
@@ -103,7 +124,10 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
   TriangleSoup soup = restored ? restored->mesh : generatedMesh(c, where);
   const std::string mesh_source = c.shape == "mesh" && !restored ? c.file.string() : where;
   SurfaceMesh mesh = SurfaceMesh::fromSoup(soup, mesh_source);
-  if (c.shape == "mesh" && !restored) checkLoadedScale(mesh, where + ", file " + c.file.string());
+  if (c.shape == "mesh" && !restored) {
+    checkLoadedScale(mesh, where + ", file " + c.file.string());
+    checkConnected(mesh, where + ", file " + c.file.string());
+  }
 
   std::vector<char> fixed;
   if (restored) {

@@ -9,11 +9,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <functional>
 #include <random>
 #include <thread>
 
 #include "app/cli_helpers.hpp"
 #include "app/snapshots.hpp"
+#include "io/checkpoint.hpp"
 
 namespace cortex::cli_test {
 namespace {
@@ -344,6 +347,53 @@ TEST(Faults, DamagedOrForeignCheckpointsAreRefused) {
   const RunResult r = runCortex({"run", "--resume", mixed.string(), "-q"}, dir.path());
   EXPECT_EQ(r.exit_code, 2) << describe(r);
   EXPECT_NE(r.err.find("another run"), std::string::npos) << describe(r);
+}
+
+// A checkpoint edited and stamped again passes its checksum; what it says must still
+// agree with itself. An edited window count ran a half-done run to its end with exit 0,
+// a snapshot count of 0 deleted the snapshots, one of -5 crashed the resume, one of 2^40
+// ran out of memory, a missing dataset was an internal error (exit 1).
+TEST(Faults, EditedCheckpointsThatPassTheirChecksumAreRefused) {
+  TempDir dir;
+  std::string text = snapshotHeavyConfig();
+  text.replace(text.find("end_time = 0.2"), 14, "end_time = 0.1");
+  const fs::path half = writeConfig(dir.path(), text, "half.toml");
+  ASSERT_EQ(runConfig(half, dir / "half", {"--threads", "1"}, dir.path()).exit_code, 0);
+  const auto snapshots = [](const fs::path& out) {
+    return std::distance(fs::directory_iterator(out / "snapshots"), fs::directory_iterator{});
+  };
+  const auto written = snapshots(dir / "half");
+  const std::vector<std::pair<std::string, std::function<void(Checkpoint&)>>> edits = {
+      {"no snapshots", [](Checkpoint& c) { c.header.next_snapshot = 0; }},
+      {"negative snapshots", [](Checkpoint& c) { c.header.next_snapshot = -5; }},
+      {"2^40 snapshots", [](Checkpoint& c) { c.header.next_snapshot = std::int64_t{1} << 40; }},
+      {"windows past the end", [](Checkpoint& c) { c.state.step = 100; }},
+      {"too few windows", [](Checkpoint& c) { c.state.step = 3; }},
+      {"negative windows", [](Checkpoint& c) { c.state.step = -1; }},
+      {"time NaN", [](Checkpoint& c) { c.state.time = std::nan(""); }},
+  };
+  for (const auto& [what, edit] : edits) {
+    const fs::path out = dir / "edited";
+    fs::remove_all(out);
+    fs::copy(dir / "half", out, fs::copy_options::recursive);
+    Checkpoint cp = readCheckpoint(out / "checkpoint.h5");
+    edit(cp);
+    writeCheckpoint(out / "checkpoint.h5", cp.header, cp.state);
+    const RunResult r = runCortex({"run", "--resume", out.string(), "--set", "simulation.end_time=0.2", "-q"},
+                                  dir.path());
+    EXPECT_EQ(r.exit_code, 2) << what << "\n" << describe(r);
+    EXPECT_NE(r.err.find(what == "2^40 snapshots" ? "snapshot files" : "checkpoint.h5"), std::string::npos)
+        << what << "\n" << describe(r);
+    EXPECT_EQ(snapshots(out), written) << what << ": the snapshots written before the checkpoint are kept";
+  }
+  // The same round trip without an edit resumes.
+  const fs::path plain = dir / "plain";
+  fs::copy(dir / "half", plain, fs::copy_options::recursive);
+  const Checkpoint cp = readCheckpoint(plain / "checkpoint.h5");
+  writeCheckpoint(plain / "checkpoint.h5", cp.header, cp.state);
+  const RunResult r = runCortex({"run", "--resume", plain.string(), "--set", "simulation.end_time=0.2", "-q"},
+                                dir.path());
+  EXPECT_EQ(r.exit_code, 0) << describe(r);
 }
 
 }  // namespace

@@ -134,6 +134,16 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
                              "membrane.0.bending_modulus", "bending 1e9 pN nm (2.5e7 pN at 40 nm)");
   expectRefusedInCheckAndRun(dir, replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\ntension = -1e300"),
                              "membrane.0.tension", "tension -1e300");
+  // A negative tension with no area term has no energy minimum: it passed check and the
+  // run failed far from equilibrium without naming the key. A held area bounds it.
+  const std::string pulling = replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\ntension = -0.001");
+  expectRefusedInCheckAndRun(dir, replaced(pulling, "tension", "area_model = \"none\"\ntension"), "membrane.0.tension",
+                             "tension -0.001 pN/nm with no area term");
+  expectRefusedInCheckAndRun(dir, replaced(pulling, "tension", "area_model = \"global\"\narea_modulus = 0.0\ntension"),
+                             "membrane.0.tension", "tension -0.001 pN/nm against an area modulus of 0");
+  const fs::path held = writeConfig(dir.path(), pulling, "held.toml");
+  const RunResult held_run = runConfig(held, dir / "held", {}, dir.path());
+  EXPECT_EQ(held_run.exit_code, 0) << describe(held_run);
   expectRefusedInCheckAndRun(dir, replaced(kVesicle, "[[membrane]]", "[mechanics]\nforce_tolerance = 1e-8\n[[membrane]]"),
                              "membrane.0.bending_modulus", "default bending against a tolerance of 1e-8 pN");
   const std::string filaments = std::string(kSpecies) + "[[filament_type]]\nname = \"actin\"\n";
@@ -225,6 +235,24 @@ TEST(HostileInput, LoadedMeshesOutOfScaleAreRefused) {
                              (dir / name).string() + "\"\n";
     expectRefusedInCheckAndRun(dir, text, name, "mesh " + name);
   }
+}
+
+// A membrane is one surface: a file with two separate spheres was one membrane with the
+// pair's area and volume (reduced volume 0.707, exit 0). Refused naming the file.
+TEST(HostileInput, ALoadedMeshOfTwoSeparateSurfacesIsRefused) {
+  TempDir dir;
+  TriangleSoup two = icosphere(Vec3(0, 0, 0), 200.0, 3);
+  const TriangleSoup other = icosphere(Vec3(600.0, 0, 0), 200.0, 3);
+  const Index shift = static_cast<Index>(two.positions.size());
+  two.positions.insert(two.positions.end(), other.positions.begin(), other.positions.end());
+  for (Tri t : other.triangles) two.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  writeObj(dir / "two.obj", two);
+  const std::string text = "[simulation]\nend_time = 0.0\n[[membrane]]\nname = \"m\"\nshape = \"mesh\"\nfile = \"" +
+                           (dir / "two.obj").string() + "\"\n";
+  expectRefusedInCheckAndRun(dir, text, "2 separate pieces", "a mesh of two spheres");
+  writeObj(dir / "one.obj", other);
+  const fs::path one = writeConfig(dir.path(), replaced(text, "two.obj", "one.obj"), "one.toml");
+  EXPECT_EQ(runCortex({"check", one.string()}, dir.path()).exit_code, 0);
 }
 
 // A network that explodes within a window passes the load check at its start (little to

@@ -19,10 +19,12 @@ namespace {
 
 using cortex::testing::countOccurrences;
 
-// A membrane with no area elasticity under a tension that turns negative at t = 0.11 s:
-// the energy -|tension|*area is unbounded below. max_step is raised so the minimizer's
-// runaway guard (a coordinate beyond 1e9 nm, mech/minimizer.cpp) is reached within a
-// few iterations; see UnboundedEnergyWithDefaultStepFails for the default step.
+// A membrane whose tension turns negative at t = 0.11 s against an area penalty so weak
+// (1e-14 pN/nm) that the energy's minimum lies at a radius of ~4e9 nm: out of reach, as
+// if unbounded (a negative tension with no area term at all, truly unbounded, is refused
+// by the config reader). max_step is raised so the minimizer's runaway guard (a
+// coordinate beyond 1e9 nm, mech/minimizer.cpp) is reached within a few iterations; see
+// UnboundedEnergyWithDefaultStepFails for the default step.
 std::string divergingConfig(const std::string& mechanics_extra) {
   return R"([simulation]
 seed = 1
@@ -42,7 +44,8 @@ mesher = "icosphere"
 radius = 200.0
 mesh_size = 40.0
 bending_modulus = 1.0
-area_model = "none"
+area_model = "global"
+area_modulus = 1.0e-14
 tension = [[0.0, 0.0], [0.1, 0.0], [0.11, -5.0]]
 )";
 }
@@ -94,7 +97,7 @@ TEST(RunFailure, MessageSaysWhen) {
   EXPECT_TRUE(std::regex_search(log, when)) << "cortex.log does not record the failure\n" << log;
 }
 
-// BUG (serious: a diverged run reports success). The same unbounded energy with the
+// BUG (serious: a diverged run reports success). The same runaway energy with the
 // default max_step (20 nm): mech/minimizer.cpp checkBounded() only fires when a coordinate
 // passes 1e9 nm or the energy falls below -1e30 pN·nm, which steps of at most 20 nm cannot
 // reach within max_iterations, so every window ends "maximum iterations reached" (a
