@@ -209,9 +209,19 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
     }
     try {
       const h5::File file = h5::File::openReadOnly(entry.path());
+      // Snapshots carry the run's id: checkpoint and trajectory copied in from another run
+      // of the same config resumed to exit 0 with the first run's snapshots before the
+      // second's. (Files of versions before the id have none, and are taken as they are.)
+      if (file.attributeExists("/", "run_id") && file.attributeString("/", "run_id") != run_id_)
+        throw InputError(fmt::format("{}: cannot resume the trajectory: snapshot file '{}' belongs to another run "
+                                     "than checkpoint.h5 and trajectory.h5 (files copied in from another run?); "
+                                     "start again with --overwrite",
+                                     outdir_.string(), entry.path().string()));
       snapshots_.push_back(describe(file, index));
       rows_.push_back(observablesOf(file));
       if (index == first_index - 1) names_ = namesOf(file);
+    } catch (const InputError&) {
+      throw;
     } catch (const std::runtime_error& e) {
       throw InputError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
                                    entry.path().string(), e.what()));
@@ -255,6 +265,7 @@ void TrajectoryWriter::write(const Frame& frame) {
     h5::File file = h5::File::createInMemory(path);
     file.setAttribute("/", "time", frame.time);
     file.setAttribute("/", "step", frame.step);
+    file.setAttribute("/", "run_id", run_id_);
     for (const MembraneFrame& membrane : frame.membranes) snapshot.membranes.push_back(writeMembrane(file, "", membrane));
     const h5::Shape grid(frame.grid_shape.begin(), frame.grid_shape.end());
     DatasetNames names;

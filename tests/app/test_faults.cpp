@@ -347,6 +347,13 @@ TEST(Faults, DamagedOrForeignCheckpointsAreRefused) {
   const RunResult r = runCortex({"run", "--resume", mixed.string(), "-q"}, dir.path());
   EXPECT_EQ(r.exit_code, 2) << describe(r);
   EXPECT_NE(r.err.find("another run"), std::string::npos) << describe(r);
+  // Its trajectory index copied in too: the snapshots before the checkpoint are still this
+  // run's (that resumed to exit 0, the two runs' snapshots one after the other).
+  fs::copy_file(other / "trajectory.h5", mixed / "trajectory.h5", fs::copy_options::overwrite_existing);
+  const RunResult both = runCortex({"run", "--resume", mixed.string(), "--set", "simulation.end_time=0.2", "-q"},
+                                   dir.path());
+  EXPECT_EQ(both.exit_code, 2) << describe(both);
+  EXPECT_NE(both.err.find("belongs to another run"), std::string::npos) << describe(both);
 }
 
 // A checkpoint edited and stamped again passes its checksum; what it says must still
