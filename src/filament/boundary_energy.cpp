@@ -47,6 +47,14 @@ Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x) {
   return f;
 }
 
+Vec3 WallEndLoads::stepForceAt(Index /*filament*/, const Vec3& point, bool /*plus_end*/, const Vec3& step) const {
+  const Vec3 at_point = boundaryForce(boundary_, point);
+  const double length2 = step.squaredNorm();
+  if (!(length2 > 0.0)) return at_point;
+  const double rise = boundaryEnergy(boundary_, point + step) - boundaryEnergy(boundary_, point);
+  return at_point + (-rise - at_point.dot(step)) / length2 * step;
+}
+
 double BoundaryRepulsionEnergy::evaluate(const Evaluation& e) {
   const std::size_t offset = 3 * static_cast<std::size_t>(layout_.bead_offset);
   const double* x = e.x + offset;

@@ -25,6 +25,8 @@ class WallEndLoads final : public EndLoadProbe {
   Vec3 forceAt(Index /*filament*/, const Vec3& point, bool /*plus_end*/) const override {
     return boundaryForce(boundary_, point);
   }
+  // Along the step, −(E(point + step) − E(point))/|step|: the walls' energy is known.
+  Vec3 stepForceAt(Index filament, const Vec3& point, bool plus_end, const Vec3& step) const override;
 
  private:
   BoundaryConfig boundary_;

@@ -94,6 +94,8 @@ class FilamentChemistry final : public ReactionHook {
   void computeLoads(const std::vector<std::array<Vec3, 2>>& end_forces);
   // Load and ratchet factor of filament f's end under `force` (pN, Brownian ratchet).
   void loadEnd(Index f, bool plus_end, const Vec3& force);
+  // One monomer along the growth direction of filament f's end.
+  Vec3 growthStep(Index f, bool plus_end) const;
   // The ratchet of filament f's end after an event moved it (setEndLoadProbe).
   void reload(Index f, bool plus_end);
   // A filament just made (nucleus, branch): its ends loaded by the probe, then counted.
@@ -145,8 +147,8 @@ class FilamentChemistry final : public ReactionHook {
   std::vector<BindingCandidates> candidates_;                              // per channel (binding kinds only)
   std::vector<std::array<double, 2>> ratchet_, load_;                // per filament: minus, plus
   const EndLoadProbe* probe_ = nullptr;
-  // Per filament, minus and plus end, at the last relaxation: the contact force and the
-  // probe's part of it.
+  // Per filament, minus and plus end, at the last relaxation: the contact force with the
+  // probe's part weighed over the growth step, and that part.
   std::vector<std::array<Vec3, 2>> relaxed_force_, probe_force_;
   std::vector<std::array<Index, 2>> end_compartment_;                // per filament: minus, plus
   std::array<std::vector<std::vector<Index>>, 2> ends_in_;           // [minus/plus][c]: filaments, sorted
