@@ -135,7 +135,10 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
     r.fail("curvature", fmt::format("must be \"signed\": the proteins of species \"{}\" have a spontaneous "
                                     "curvature (the unsigned estimator has no sign)", protein_curvature));
 
-  const char* default_area = by_shape && !r.has("area_modulus") ? "exact" : "global";
+  // A patch's area is free by default: its lipids come and go through the frame, and a
+  // flat one is at the least area its boundary allows, which an exact constraint could
+  // only hold flat (the default "exact" failed on a patch with H0 with non-finite forces).
+  const char* default_area = by_shape && !r.has("area_modulus") ? (closed ? "exact" : "none") : "global";
   const std::string model = r.choice("area_model", default_area, {"exact", "global", "per_vertex", "none"});
   m.area.model = model == "exact"        ? AreaModel::kExact
                  : model == "global"     ? AreaModel::kGlobal
@@ -145,6 +148,14 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
   m.area.modulus = r.schedule("area_modulus", penalty ? 400.0 : 0.0, Range::nonNegative(), "pN/nm");
   if (!penalty && !m.area.modulus.isZero())
     r.fail("area_modulus", fmt::format("is for the penalty area models (\"global\", \"per_vertex\"), not \"{}\"", model));
+  if (penalty && m.area.modulus.isZero())
+    r.fail("area_modulus", fmt::format("is 0: the \"{}\" penalty then holds nothing; to leave the area free say "
+                                       "area_model = \"none\"",
+                                       model));
+  if (model == "exact" && !closed)
+    r.fail("area_model", "\"exact\" on a flat patch: it starts at the least area its boundary allows, so a held area "
+                         "can only keep it flat; leave the area free (\"none\", the default for patches, with a "
+                         "tension if wanted) or use a penalty (\"global\")");
   if (model == "exact" && !by_shape)
     r.fail("area_model", fmt::format("\"exact\" needs the default minimizer ([mechanics] minimizer = \"auto\"); with "
                                      "{} use the penalty \"global\" with an area_modulus",
@@ -196,6 +207,25 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
   const bool has_target = volume.reduced_volume.isSet() || volume.target_volume.isSet();
   // A target without a modulus: held exactly (or refused where nothing could hold it).
   volume.exact = has_target && !r.has("volume_modulus");
+  if (has_target && r.has("volume_modulus") && volume.modulus.isZero())
+    r.fail("volume_modulus", "is 0 with a volume target: nothing would hold the target (it was dropped, with exit "
+                             "0); leave volume_modulus out to hold it exactly, or give it > 0");
+  // A tension with nothing holding the area or the volume shrinks a vesicle to a point:
+  // it ran for seconds before failing with "area changed 0.0001-fold". Looked for at the
+  // schedules' points (all linear between them).
+  if (m.area.model != AreaModel::kExact && !volume.exact) {
+    std::vector<double> times;
+    for (const Schedule* s : {&m.tension.tension, &m.area.modulus, &volume.modulus})
+      for (const auto& point : s->points()) times.push_back(point.first);
+    for (double t : times) {
+      const bool area_held = penalty && m.area.modulus.at(t) > 0.0, volume_held = volume.modulus.at(t) > 0.0;
+      if (m.tension.tension.at(t) > 0.0 && !area_held && !volume_held)
+        r.fail("tension", fmt::format("pulls a closed membrane with nothing holding its area or its volume{} "
+                                      "(area_model = \"{}\", no volume target or modulus): it shrinks to a point; "
+                                      "hold the volume (reduced_volume, target_volume or volume_modulus) or the area",
+                                      m.tension.tension.isConstant() ? "" : fmt::format(" at t = {:g} s", t), model));
+    }
+  }
   if (volume.exact && !by_shape)
     r.fail(volume.reduced_volume.isSet() ? "reduced_volume" : "target_volume",
            fmt::format("needs a volume_modulus with {} (the default minimizer holds it exactly)", other_minimizer));

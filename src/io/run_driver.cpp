@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <Eigen/Core>
 #include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -29,12 +30,31 @@
 namespace cortex {
 namespace {
 
-void setUpLogging(const std::filesystem::path& outdir, bool append) {
+std::shared_ptr<spdlog::sinks::sink> warningsOnStderr() {
   auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
   console->set_pattern("%^%l%$: %v");
   console->set_level(spdlog::level::warn);
+  return console;
+}
+
+// Until the run's folder may be written (everything that can refuse the input comes
+// first), messages go to stderr as they come and are kept for cortex.log: the set-up's
+// warnings (a mesh too coarse for its shape, a flipped mesh) were on stderr only.
+std::shared_ptr<spdlog::sinks::ringbuffer_sink_mt> logTheSetUp() {
+  constexpr std::size_t kKept = 1000;
+  auto kept = std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(kKept);
+  auto logger = std::make_shared<spdlog::logger>("cortex", spdlog::sinks_init_list{warningsOnStderr(), kept});
+  logger->set_level(spdlog::level::debug);
+  spdlog::set_default_logger(logger);
+  return kept;
+}
+
+// `setup`: what logTheSetUp kept, written first.
+void setUpLogging(const std::filesystem::path& outdir, bool append, spdlog::sinks::ringbuffer_sink_mt& setup) {
+  auto console = warningsOnStderr();
   auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((outdir / "cortex.log").string(), !append);
   file->set_pattern("[%Y-%m-%d %H:%M:%S.%e] %l: %v");
+  for (const auto& message : setup.last_raw()) file->log(message);
   auto logger = std::make_shared<spdlog::logger>("cortex", spdlog::sinks_init_list{console, file});
   logger->set_level(spdlog::level::debug);
   logger->flush_on(spdlog::level::info);
@@ -220,6 +240,7 @@ RunOutcome runSimulation(const RunRequest& request) {
   // results would change in the last digits with --threads (cortex parallelizes its own
   // loops in a fixed order instead).
   Eigen::setNbThreads(1);
+  const auto setup_log = logTheSetUp();
   const bool resume = !request.resume_dir.empty();
   std::vector<std::string> overrides = request.overrides;
   if (request.seed) overrides.push_back(fmt::format("simulation.seed={}", *request.seed));
@@ -272,7 +293,7 @@ RunOutcome runSimulation(const RunRequest& request) {
   for (const char* name : kRunFiles) refuseForeignEntry(outdir, name);
   if (!resume) prepareOutputFolder(outdir, request.overwrite);
 
-  setUpLogging(outdir, resume);
+  setUpLogging(outdir, resume, *setup_log);
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",
                resume ? outdir.string() : request.config.string(), config.simulation.seed, request.threads,
                request.threads == 1 ? "" : "s");

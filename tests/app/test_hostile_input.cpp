@@ -139,8 +139,8 @@ TEST(HostileInput, StiffnessesNoRelaxationCanResolveAreRefused) {
   const std::string pulling = replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\ntension = -0.001");
   expectRefusedInCheckAndRun(dir, replaced(pulling, "tension", "area_model = \"none\"\ntension"), "membrane.0.tension",
                              "tension -0.001 pN/nm with no area term");
-  expectRefusedInCheckAndRun(dir, replaced(pulling, "tension", "area_model = \"global\"\narea_modulus = 0.0\ntension"),
-                             "membrane.0.tension", "tension -0.001 pN/nm against an area modulus of 0");
+  expectRefusedInCheckAndRun(dir, replaced(pulling, "tension", "area_model = \"global\"\narea_modulus = [[0.0, 0.0], [1.0, 400.0]]\ntension"),
+                             "membrane.0.tension", "tension -0.001 pN/nm against an area modulus ramped up from 0");
   const fs::path held = writeConfig(dir.path(), pulling, "held.toml");
   const RunResult held_run = runConfig(held, dir / "held", {}, dir.path());
   EXPECT_EQ(held_run.exit_code, 0) << describe(held_run);
@@ -235,6 +235,44 @@ TEST(HostileInput, LoadedMeshesOutOfScaleAreRefused) {
                              (dir / name).string() + "\"\n";
     expectRefusedInCheckAndRun(dir, text, name, "mesh " + name);
   }
+}
+
+// Area and volume terms that hold nothing. An explicit volume_modulus = 0 dropped the
+// reduced_volume target (a sphere at v = 0.9997 where 0.85 was asked, exit 0); a tension
+// on a vesicle with neither area nor volume held shrank it for seconds before exit 1; an
+// exact area on a flat patch (the patches' default then) failed as soon as anything drove
+// it, with non-finite forces. Each is refused naming its key, and a patch's area is free
+// by default: a patch with H0 bulges (exit 0).
+TEST(HostileInput, AreaAndVolumeTermsThatHoldNothingAreRefused) {
+  TempDir dir;
+  const std::string deflated = replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\nreduced_volume = 0.85");
+  expectRefusedInCheckAndRun(dir, replaced(deflated, "reduced_volume", "volume_modulus = 0.0\nreduced_volume"),
+                             "membrane.0.volume_modulus", "volume target with a modulus of 0");
+  const auto vesicleWith = [](const std::string& keys) {
+    return replaced(kVesicle, "mesh_size = 40.0", "mesh_size = 40.0\n" + keys);
+  };
+  expectRefusedInCheckAndRun(dir, vesicleWith("area_model = \"global\"\narea_modulus = 0.0"), "membrane.0.area_modulus",
+                             "a global area penalty of 0");
+  expectRefusedInCheckAndRun(dir, vesicleWith("area_model = \"none\"\ntension = 0.01"), "membrane.0.tension",
+                             "a tension on a vesicle with nothing holding area or volume");
+  const std::string patch = R"([simulation]
+end_time = 0.0
+[[membrane]]
+name = "patch"
+shape = "plane"
+size = [400.0, 400.0]
+mesh_size = 40.0
+bending_modulus = 100.0
+spontaneous_curvature = 0.003
+)";
+  expectRefusedInCheckAndRun(dir, patch + "area_model = \"exact\"\n", "membrane.0.area_model",
+                             "an exact area on a flat patch");
+  const fs::path free = writeConfig(dir.path(), patch, "patch.toml");
+  const RunResult run = runConfig(free, dir / "patch", {}, dir.path());
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  // Flat, the patch's bending energy is 2κH0²A = 288 pN·nm; bulged towards its H0, less.
+  const double bending = readJson(dir / "patch" / "summary.json")["membranes"][0]["energy"]["bending"].get<double>();
+  EXPECT_LT(bending, 0.9 * 2.0 * 100.0 * 0.003 * 0.003 * 400.0 * 400.0);
 }
 
 // A membrane is one surface: a file with two separate spheres was one membrane with the
