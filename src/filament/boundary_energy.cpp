@@ -47,12 +47,13 @@ Vec3 boundaryForce(const BoundaryConfig& b, const Vec3& x) {
   return f;
 }
 
-Vec3 WallEndLoads::stepForceAt(Index /*filament*/, const Vec3& point, bool /*plus_end*/, const Vec3& step) const {
-  const Vec3 at_point = boundaryForce(boundary_, point);
+Vec3 WallEndLoads::stepCorrection(Index /*filament*/, const Vec3& point, bool /*plus_end*/, const Vec3& step) const {
   const double length2 = step.squaredNorm();
-  if (!(length2 > 0.0)) return at_point;
+  if (!(length2 > 0.0)) return Vec3::Zero();
   const double rise = boundaryEnergy(boundary_, point + step) - boundaryEnergy(boundary_, point);
-  return at_point + (-rise - at_point.dot(step)) / length2 * step;
+  // Far past a wall the energies overflow (inf − inf): the force at the point says more.
+  if (!std::isfinite(rise)) return Vec3::Zero();
+  return (-rise - boundaryForce(boundary_, point).dot(step)) / length2 * step;
 }
 
 double BoundaryRepulsionEnergy::evaluate(const Evaluation& e) {

@@ -25,8 +25,9 @@ class WallEndLoads final : public EndLoadProbe {
   Vec3 forceAt(Index /*filament*/, const Vec3& point, bool /*plus_end*/) const override {
     return boundaryForce(boundary_, point);
   }
-  // Along the step, −(E(point + step) − E(point))/|step|: the walls' energy is known.
-  Vec3 stepForceAt(Index filament, const Vec3& point, bool plus_end, const Vec3& step) const override;
+  // Along the step, −(E(point + step) − E(point))/|step| in place of the force at point:
+  // the walls' energy is known.
+  Vec3 stepCorrection(Index filament, const Vec3& point, bool plus_end, const Vec3& step) const override;
 
  private:
   BoundaryConfig boundary_;

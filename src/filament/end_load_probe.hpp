@@ -19,15 +19,16 @@ class EndLoadProbe {
   // Force (pN) those bodies, as they stand, put on the plus (or minus) end bead of
   // filament `filament`, now at `point`.
   virtual Vec3 forceAt(Index filament, const Vec3& point, bool plus_end) const = 0;
-  // The same force as the ratchet weighs the end's next growth step, from `point` to
+  // What the ratchet adds to forceAt for the end's next growth step, from `point` to
   // `point + step` (one monomer along the growth direction): along the step, the mean
-  // force over it, −ΔU/|step|, so that the step's rate carries its energy change
-  // (detailed balance). Bodies whose force barely changes over a step need not say: the
-  // force at `point`. (A wall of the default screening length, 2.7 nm, one monomer,
-  // grows e-fold over a step; weighed at `point` its stalled ends pushed at 1.6-1.7 x the
-  // ratchet's stall force.)
-  virtual Vec3 stepForceAt(Index filament, const Vec3& point, bool plus_end, const Vec3& /*step*/) const {
-    return forceAt(filament, point, plus_end);
+  // force over it, −ΔU/|step|, minus the force at `point`, so that the step's rate
+  // carries its energy change (detailed balance). Bodies whose force barely changes over
+  // a step need not say: zero. (A wall of the default screening length, 2.7 nm, one
+  // monomer, grows e-fold over a step; weighed at `point` its stalled ends pushed at
+  // 1.6 x the ratchet's stall force.)
+  virtual Vec3 stepCorrection(Index /*filament*/, const Vec3& /*point*/, bool /*plus_end*/,
+                              const Vec3& /*step*/) const {
+    return Vec3::Zero();
   }
 };
 
@@ -43,10 +44,10 @@ class EndLoadSum final : public EndLoadProbe {
     for (const EndLoadProbe* p : parts_) force += p->forceAt(filament, point, plus_end);
     return force;
   }
-  Vec3 stepForceAt(Index filament, const Vec3& point, bool plus_end, const Vec3& step) const override {
-    Vec3 force = Vec3::Zero();
-    for (const EndLoadProbe* p : parts_) force += p->stepForceAt(filament, point, plus_end, step);
-    return force;
+  Vec3 stepCorrection(Index filament, const Vec3& point, bool plus_end, const Vec3& step) const override {
+    Vec3 correction = Vec3::Zero();
+    for (const EndLoadProbe* p : parts_) correction += p->stepCorrection(filament, point, plus_end, step);
+    return correction;
   }
 
  private:

@@ -177,10 +177,11 @@ void FilamentChemistry::computeLoads(const std::vector<std::array<Vec3, 2>>& end
     for (int e = 0; e < 2; ++e) {
       const Index f = static_cast<Index>(i);
       if (probe_) {
-        // The probe's bodies weighed over the growth step instead of at the end bead.
+        // The probe's bodies weighed over the growth step where they say how.
         const Vec3& x = endBead(f, e == 1);
-        probe_force_[i][e] = probe_->stepForceAt(f, x, e == 1, growthStep(f, e == 1));
-        relaxed_force_[i][e] += probe_force_[i][e] - probe_->forceAt(f, x, e == 1);
+        const Vec3 correction = probe_->stepCorrection(f, x, e == 1, growthStep(f, e == 1));
+        probe_force_[i][e] = probe_->forceAt(f, x, e == 1) + correction;
+        relaxed_force_[i][e] += correction;
       }
       loadEnd(f, e == 1, relaxed_force_[i][e]);
     }
@@ -193,7 +194,7 @@ Vec3 FilamentChemistry::growthStep(Index i, bool plus_end) const {
 
 // Brownian ratchet (thesis eq. 2.14): a load f opposing growth slows it by
 // exp(-f delta / kT); a pulling force does not speed it beyond free growth. f is the
-// mean over the step where the probe knows it (EndLoadProbe::stepForceAt): f delta is
+// mean over the step where the probe knows it (EndLoadProbe::stepCorrection): f delta is
 // then the step's energy change.
 void FilamentChemistry::loadEnd(Index i, bool plus_end, const Vec3& force) {
   const Filament& f = net_.filaments()[i];
@@ -217,8 +218,9 @@ void FilamentChemistry::reload(Index i, bool plus_end) {
   // within the window.
   const bool relaxed = static_cast<std::size_t>(i) < relaxed_force_.size();
   const Vec3 before = relaxed ? relaxed_force_[i][e] : Vec3::Zero();
-  const Vec3 probed = before - (relaxed ? probe_force_[i][e] : Vec3::Zero()) +
-                     probe_->stepForceAt(i, endBead(i, plus_end), plus_end, growthStep(i, plus_end));
+  const Vec3& x = endBead(i, plus_end);
+  const Vec3 probed = before - (relaxed ? probe_force_[i][e] : Vec3::Zero()) + probe_->forceAt(i, x, plus_end) +
+                      probe_->stepCorrection(i, x, plus_end, growthStep(i, plus_end));
   const Filament& f = net_.filaments()[i];
   const Vec3 u = plus_end ? f.plusDirection() : f.minusDirection();
   loadEnd(i, plus_end, probed.dot(u) < before.dot(u) ? probed : before);

@@ -54,9 +54,10 @@ class FilamentChemistry final : public ReactionHook {
   // where each bound protein is, the candidate binding pairs and branching sites, then
   // every rate factor that changed.
   void update(const std::vector<std::array<Vec3, 2>>& end_forces);
-  // Bodies that stand still between relaxations and act on ends (membranes): after each
-  // growth or shrinkage of an end, its load becomes the last relaxation's with their
-  // part replaced by what they put on the end where it now is. Null: none.
+  // Bodies that stand still between relaxations and act on ends (membranes, walls, other
+  // filaments): their part of an end's load is weighed over its growth step where they
+  // say how (EndLoadProbe::stepCorrection), and after each growth or shrinkage of an end
+  // replaced by what they put on the end where it now is. Null: none.
   void setEndLoadProbe(const EndLoadProbe* probe) { probe_ = probe; }
   // Where the monomers of filament type `type` live, when a membrane confines them to one
   // of its sides (true on that side): nuclei of the type then form there, at points drawn

@@ -108,14 +108,34 @@ void readShape(const ConfigReader& r, MembraneConfig& m, const std::filesystem::
   }
 }
 
+// The times of the schedules' points, where schedules linear between their points take
+// their extremes: a condition on their values holds throughout if it holds at these.
+std::vector<double> knots(const std::vector<const Schedule*>& schedules) {
+  std::vector<double> times;
+  for (const Schedule* s : schedules)
+    for (const auto& point : s->points()) times.push_back(point.first);
+  return times;
+}
+
+// " at t = T s" for a message about time t, unless all the schedules are constant.
+std::string atTime(const std::vector<const Schedule*>& schedules, double t) {
+  for (const Schedule* s : schedules)
+    if (!s->isConstant()) return fmt::format(" at t = {:g} s", t);
+  return "";
+}
+
 // Each term's parameters into its own struct (membrane.hpp). How area and volume are
 // held depends on the minimizer: the default relaxation holds them exactly unless a
 // modulus asks for the penalty form; cg and lbfgs have only the penalty forms.
 // `protein_curvature`: the name of a membrane species whose proteins carry a spontaneous
 // curvature (sensing or generating), empty if none.
-MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, MinimizerKind minimizer,
-                                          const std::string& protein_curvature) {
+// `filaments`: the config has filaments, which may hold a vesicle out from inside.
+MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, const std::string& shape, MinimizerKind minimizer,
+                                          const std::string& protein_curvature, bool filaments) {
   MembraneMechanics m;
+  // A loaded mesh may be closed or not: volume keys are accepted here and checked once it
+  // is read (sim/), and the checks that need it closed are left to the run.
+  const bool closed = shape != "plane", surely_closed = shape == "sphere" || shape == "ellipsoid";
   const Range any{};
   const bool by_shape = minimizer == MinimizerKind::kAuto;
   const char* other_minimizer = "[mechanics] minimizer = \"cg\" or \"lbfgs\"";
@@ -136,8 +156,10 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
                                     "curvature (the unsigned estimator has no sign)", protein_curvature));
 
   // A patch's area is free by default: its lipids come and go through the frame, and a
-  // flat one is at the least area its boundary allows, which an exact constraint could
-  // only hold flat (the default "exact" failed on a patch with H0 with non-finite forces).
+  // flat one starts at the least area its boundary allows, where the area's gradient has
+  // no normal part for an exact constraint to act with (the default "exact" failed on a
+  // patch with H0 with non-finite forces). A loaded mesh found open gets the same default
+  // (sim/membrane_builder.cpp).
   const char* default_area = by_shape && !r.has("area_modulus") ? (closed ? "exact" : "none") : "global";
   const std::string model = r.choice("area_model", default_area, {"exact", "global", "per_vertex", "none"});
   m.area.model = model == "exact"        ? AreaModel::kExact
@@ -153,9 +175,10 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
                                        "area_model = \"none\"",
                                        model));
   if (model == "exact" && !closed)
-    r.fail("area_model", "\"exact\" on a flat patch: it starts at the least area its boundary allows, so a held area "
-                         "can only keep it flat; leave the area free (\"none\", the default for patches, with a "
-                         "tension if wanted) or use a penalty (\"global\")");
+    r.fail("area_model", "\"exact\" on a flat patch: it starts at the least area its boundary allows, where the "
+                         "area's gradient has no normal part for the constraint to act with; leave the area free "
+                         "(\"none\", the default for patches, with a tension if wanted) or use a penalty "
+                         "(\"global\")");
   if (model == "exact" && !by_shape)
     r.fail("area_model", fmt::format("\"exact\" needs the default minimizer ([mechanics] minimizer = \"auto\"); with "
                                      "{} use the penalty \"global\" with an area_modulus",
@@ -171,19 +194,15 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
   // relaxation failed at once "far from equilibrium", naming no key). Both schedules are
   // linear between their points, so their points are where to look.
   if (m.area.model != AreaModel::kExact) {
-    std::vector<double> times;
-    for (const Schedule* s : {&m.tension.tension, &m.area.modulus})
-      for (const auto& point : s->points()) times.push_back(point.first);
-    for (double t : times) {
+    const std::vector<const Schedule*> schedules = {&m.tension.tension, &m.area.modulus};
+    for (double t : knots(schedules)) {
       const double gamma = m.tension.tension.at(t);
       if (!(gamma < 0.0) || (penalty && m.area.modulus.at(t) > 0.0)) continue;
-      const bool constant = m.tension.tension.isConstant() && m.area.modulus.isConstant();
       r.fail("tension", fmt::format("is negative ({:g} pN/nm{}) with no area term to hold it (area_model = \"{}\"{}): "
                                     "the energy γA then has no lower bound and the membrane grows without end; "
                                     "hold the area (area_model = \"exact\", or a penalty with an area_modulus "
                                     "> 0)",
-                                    gamma, constant ? "" : fmt::format(" at t = {:g} s", t), model,
-                                    penalty ? ", area_modulus 0" : ""));
+                                    gamma, atTime(schedules, t), model, penalty ? ", area_modulus 0" : ""));
     }
   }
   m.regularization.strength = r.schedule("mesh_regularization", 0.0, Range::nonNegative(), "pN·nm");
@@ -211,19 +230,17 @@ MembraneMechanics readMechanicsOfMembrane(const ConfigReader& r, bool closed, Mi
     r.fail("volume_modulus", "is 0 with a volume target: nothing would hold the target (it was dropped, with exit "
                              "0); leave volume_modulus out to hold it exactly, or give it > 0");
   // A tension with nothing holding the area or the volume shrinks a vesicle to a point:
-  // it ran for seconds before failing with "area changed 0.0001-fold". Looked for at the
-  // schedules' points (all linear between them).
-  if (m.area.model != AreaModel::kExact && !volume.exact) {
-    std::vector<double> times;
-    for (const Schedule* s : {&m.tension.tension, &m.area.modulus, &volume.modulus})
-      for (const auto& point : s->points()) times.push_back(point.first);
-    for (double t : times) {
+  // it ran for seconds before failing with "area changed 0.0001-fold". (Filaments inside
+  // may hold it out: then it is for the run to see.)
+  if (surely_closed && !filaments && m.area.model != AreaModel::kExact && !volume.exact) {
+    const std::vector<const Schedule*> schedules = {&m.tension.tension, &m.area.modulus, &volume.modulus};
+    for (double t : knots(schedules)) {
       const bool area_held = penalty && m.area.modulus.at(t) > 0.0, volume_held = volume.modulus.at(t) > 0.0;
       if (m.tension.tension.at(t) > 0.0 && !area_held && !volume_held)
         r.fail("tension", fmt::format("pulls a closed membrane with nothing holding its area or its volume{} "
-                                      "(area_model = \"{}\", no volume target or modulus): it shrinks to a point; "
-                                      "hold the volume (reduced_volume, target_volume or volume_modulus) or the area",
-                                      m.tension.tension.isConstant() ? "" : fmt::format(" at t = {:g} s", t), model));
+                                      "(area_model = \"{}\", volume_modulus 0): it shrinks to a point; hold the "
+                                      "volume (reduced_volume, target_volume or volume_modulus) or the area",
+                                      atTime(schedules, t), model));
     }
   }
   if (volume.exact && !by_shape)
@@ -253,8 +270,9 @@ void requireResolvable(const ConfigReader& r, const MembraneMechanics& m, double
                           "volume_modulus x mesh_size² x 1%", tolerance);
 }
 
+// `filaments`: the config has filaments (readMechanicsOfMembrane).
 MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std::filesystem::path& base_dir,
-                            const MinimizerSettings& mechanics) {
+                            const MinimizerSettings& mechanics, bool filaments) {
   const MinimizerKind minimizer = mechanics.kind;
   MembraneConfig m;
   m.name = r.name("name", fmt::format("membrane{}", index));
@@ -264,7 +282,8 @@ MembraneConfig readMembrane(const ConfigReader& r, std::size_t index, const std:
   std::string protein_curvature;
   for (const SurfaceSpeciesConfig& sp : m.species)
     if (sp.curvature && sp.curvature->spontaneous_curvature != 0.0) protein_curvature = sp.name;
-  m.mechanics = readMechanicsOfMembrane(r, m.shape != "plane", minimizer, protein_curvature);
+  m.mechanics = readMechanicsOfMembrane(r, m.shape, minimizer, protein_curvature, filaments);
+  m.area_model_given = r.has("area_model");
   requireResolvable(r, m.mechanics, m.mesh_size, mechanics.force_tolerance);
   m.remesh = r.boolean("remesh", false);
   // A loaded mesh has no mesh_size: its sizes default from its own mean edge (sim/).
@@ -346,7 +365,7 @@ Config parseConfig(const std::string& text, const std::string& source,
   if (auto m = r.table("mechanics")) c.mechanics = readMechanics(*m);
   const auto membranes = r.tableArray("membrane");
   for (std::size_t i = 0; i < membranes.size(); ++i) {
-    c.membranes.push_back(readMembrane(membranes[i], i, base_dir, c.mechanics));
+    c.membranes.push_back(readMembrane(membranes[i], i, base_dir, c.mechanics, r.has("filament_type")));
     for (std::size_t j = 0; j < i; ++j)
       if (c.membranes[j].name == c.membranes[i].name)
         membranes[i].fail("name", fmt::format("\"{}\" is used by membrane {} already", c.membranes[i].name, j));

@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <regex>
 
@@ -170,11 +169,7 @@ void checkResumable(const Config& stored, const Config& now, double checkpoint_t
 void checkCheckpointConsistent(const Config& stored, const Checkpoint& cp, const std::filesystem::path& file) {
   const SimulationConfig& sim = stored.simulation;
   const SystemState& s = cp.state;
-  // As Simulation counts them: windows of chemistry_window from t = 0, the last one cut
-  // at end_time.
-  const auto windows = static_cast<std::int64_t>(std::ceil(sim.end_time / sim.chemistry_window - 1e-9));
-  const double expected = std::min(static_cast<double>(s.step) * sim.chemistry_window, sim.end_time);
-  if (s.step < 0 || s.step > windows || !(s.time == expected))
+  if (s.step < 0 || s.step > Simulation::windowsOf(sim) || !(s.time == Simulation::timeOfWindow(sim, s.step)))
     throw InputError(fmt::format("{}: its clock disagrees with its config ({} windows of {:g} s completed, yet "
                                  "t = {:g} s): edited or damaged; start again with --overwrite",
                                  file.string(), s.step, sim.chemistry_window, s.time));
@@ -291,7 +286,10 @@ RunOutcome runSimulation(const RunRequest& request) {
   auto system = buildSystem(config, checkpoint ? &checkpoint->state : nullptr);
   checkChemistryLoad(*system, config);
   for (const char* name : kRunFiles) refuseForeignEntry(outdir, name);
-  if (!resume) prepareOutputFolder(outdir, request.overwrite);
+  if (resume)
+    TrajectoryWriter::checkResumable(outdir, header.next_snapshot, header.run_id, checkpoint->state.time);
+  else
+    prepareOutputFolder(outdir, request.overwrite);
 
   setUpLogging(outdir, resume, *setup_log);
   spdlog::info("cortex {} {} {} (seed {}, {} thread{})", CORTEX_VERSION, resume ? "resuming" : "running",

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -189,6 +190,63 @@ XdmfFilaments writeFilaments(h5::File& file, const std::string& group, const Fil
 
 }  // namespace
 
+void TrajectoryWriter::checkResumable(const std::filesystem::path& outdir, std::int64_t first_index,
+                                      const std::string& run_id, double checkpoint_time) {
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(fmt::format("{}: cannot resume the trajectory: {}; start again with --overwrite", outdir.string(),
+                                 why));
+  };
+  std::vector<std::pair<std::int64_t, std::filesystem::path>> kept;
+  std::optional<double> next_time;  // of snapshot first_index, if there
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(outdir / "snapshots", ec)) {
+    const std::int64_t index = parseIndex(entry.path().filename().string());
+    if (index < 0 || index > first_index) continue;
+    try {
+      const h5::File file = h5::File::openReadOnly(entry.path());
+      if (index == first_index) {
+        next_time = file.attributeDouble("/", "time");
+        continue;
+      }
+      // Snapshots carry the run's id: a checkpoint and trajectory copied in from another
+      // run of the same config resumed to exit 0 behind this run's snapshots. (Files of
+      // versions before the id have none, and are taken as they are.)
+      if (file.attributeExists("/", "run_id") && file.attributeString("/", "run_id") != run_id)
+        refuse(fmt::format("snapshot file '{}' belongs to another run than checkpoint.h5 and trajectory.h5 (files "
+                           "copied in from another run?)",
+                           entry.path().string()));
+      if (index == first_index - 1 && !(file.attributeDouble("/", "time") <= checkpoint_time))
+        refuse(fmt::format("snapshot file '{}' is of t = {:g} s, after the checkpoint's t = {:g} s (checkpoint.h5 "
+                           "edited?)",
+                           entry.path().string(), file.attributeDouble("/", "time"), checkpoint_time));
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      refuse(fmt::format("snapshot file '{}' is unreadable ({})", entry.path().string(), e.what()));
+    }
+    kept.emplace_back(index, entry.path());
+  }
+  if (ec) refuse(fmt::format("its snapshots folder cannot be read ({})", ec.message()));
+  // The checkpoint was written after the snapshots it counts and before the next one: a
+  // count edited down deleted the later snapshots and renumbered the rest, with exit 0.
+  if (next_time && !(*next_time > checkpoint_time))
+    refuse(fmt::format("checkpoint.h5 counts {} snapshots written before it, but snapshot {} is of t = {:g} s, not "
+                       "after the checkpoint's t = {:g} s (checkpoint.h5 edited?)",
+                       first_index, first_index, *next_time, checkpoint_time));
+  // The checkpoint continues snapshots 0 .. first_index - 1: a resume without some of them
+  // ended with exit 0 and a trajectory silently missing those times. (Found from the
+  // files there, not by listing all first_index names: the count may be edited.)
+  if (static_cast<std::int64_t>(kept.size()) != first_index) {
+    std::sort(kept.begin(), kept.end());
+    std::int64_t first_missing = 0;
+    while (first_missing < static_cast<std::int64_t>(kept.size()) && kept[first_missing].first == first_missing)
+      ++first_missing;
+    const std::int64_t missing = first_index - static_cast<std::int64_t>(kept.size());
+    refuse(fmt::format("{} of the {} snapshot files before the checkpoint are missing ({}{}); put them back",
+                       missing, first_index, snapshotFile(first_missing), missing > 1 ? ", ..." : ""));
+  }
+}
+
 TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append,
                                    std::string run_id, std::string config_toml)
     : outdir_(std::move(outdir)),
@@ -209,40 +267,13 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path outdir, std::int64_t fi
     }
     try {
       const h5::File file = h5::File::openReadOnly(entry.path());
-      // Snapshots carry the run's id: checkpoint and trajectory copied in from another run
-      // of the same config resumed to exit 0 with the first run's snapshots before the
-      // second's. (Files of versions before the id have none, and are taken as they are.)
-      if (file.attributeExists("/", "run_id") && file.attributeString("/", "run_id") != run_id_)
-        throw InputError(fmt::format("{}: cannot resume the trajectory: snapshot file '{}' belongs to another run "
-                                     "than checkpoint.h5 and trajectory.h5 (files copied in from another run?); "
-                                     "start again with --overwrite",
-                                     outdir_.string(), entry.path().string()));
       snapshots_.push_back(describe(file, index));
       rows_.push_back(observablesOf(file));
       if (index == first_index - 1) names_ = namesOf(file);
-    } catch (const InputError&) {
-      throw;
     } catch (const std::runtime_error& e) {
       throw InputError(fmt::format("cannot resume the trajectory: snapshot file '{}' is unreadable ({})",
                                    entry.path().string(), e.what()));
     }
-  }
-  // The checkpoint continues snapshots 0 .. first_index - 1: a resume without some of them
-  // ended with exit 0 and a trajectory silently missing those times.
-  // (Found from the files there, not by listing all first_index names: the count comes
-  // from the checkpoint, which may be edited.)
-  if (append && static_cast<std::int64_t>(snapshots_.size()) != first_index) {
-    std::vector<std::int64_t> present;
-    for (const XdmfSnapshot& snapshot : snapshots_) present.push_back(snapshot.index);
-    std::sort(present.begin(), present.end());
-    std::int64_t first_missing = 0;
-    while (first_missing < static_cast<std::int64_t>(present.size()) && present[first_missing] == first_missing)
-      ++first_missing;
-    const std::int64_t missing = first_index - static_cast<std::int64_t>(present.size());
-    throw InputError(fmt::format("{}: cannot resume the trajectory: {} of the {} snapshot files before the "
-                                 "checkpoint are missing ({}{}); put them back, or start again with --overwrite",
-                                 outdir_.string(), missing, first_index, snapshotFile(first_missing),
-                                 missing > 1 ? ", ..." : ""));
   }
   // The XDMF and the table list snapshots in time order (directory order is arbitrary).
   std::vector<std::size_t> order(snapshots_.size());

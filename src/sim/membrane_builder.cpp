@@ -75,8 +75,10 @@ void checkConnected(const SurfaceMesh& mesh, const std::string& where) {
   for (const Tri& t : mesh.triangles())
     for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
   Index pieces = 0, stray = -1;
-  for (Index v = 0; v < mesh.numVertices(); ++v)
-    if (root(v) == v && ++pieces == 2) stray = v;
+  for (Index v = 0; v < mesh.numVertices(); ++v) {
+    if (root(v) == v) ++pieces;
+    if (stray < 0 && root(v) != root(0)) stray = v;
+  }
   if (pieces > 1)
     throw InputError(fmt::format("{}: the mesh is {} separate pieces (vertex {} is not connected to vertex 0); a "
                                  "membrane is one connected surface: give each piece its own [[membrane]]",
@@ -136,7 +138,13 @@ std::unique_ptr<Membrane> buildMembrane(const MembraneConfig& c, const std::stri
     fixed.resize(mesh.numVertices(), 0);
     for (Index v = 0; v < mesh.numVertices(); ++v) fixed[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
   }
-  auto membrane = std::make_unique<Membrane>(c.name, std::move(mesh), c.mechanics, fixed, where);
+  // A loaded mesh that is open gets a patch's default area model (io/config.cpp): free.
+  MembraneMechanics mechanics = c.mechanics;
+  if (c.shape == "mesh" && !c.area_model_given && !mesh.isClosed() && mechanics.area.model == AreaModel::kExact) {
+    mechanics.area.model = AreaModel::kNone;
+    spdlog::info("{}: the mesh is open: its area is free (area_model = \"none\", the default for patches)", where);
+  }
+  auto membrane = std::make_unique<Membrane>(c.name, std::move(mesh), mechanics, fixed, where);
 
   if (!restored && membrane->isClosed() && membrane->material().initial_volume < 0.0) {
     // A closed mesh whose triangles face inwards: flip it rather than simulate inside-out.

@@ -123,6 +123,9 @@ struct MembraneConfig {
   std::optional<TriangleSoup> soup;    // or the triangles themselves (programs and tests)
   double mesh_size = 0.0;              // nm
   MembraneMechanics mechanics;
+  // area_model was given (not defaulted): a loaded mesh's default depends on whether it
+  // turns out closed (sim/membrane_builder.cpp).
+  bool area_model_given = false;
   bool remesh = false;
   double min_size = 0.0, max_size = 0.0;  // nm
   double remesh_tolerance = 0.0;          // nm, largest mesh-to-surface distance (sizing)

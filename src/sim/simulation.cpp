@@ -34,14 +34,14 @@ Simulation::Simulation(System& system, const SimulationConfig& simulation,
                      m->name(), mech_.force_tolerance, mech_.force_tolerance / own, own);
 }
 
-std::int64_t Simulation::totalWindows() const {
-  return static_cast<std::int64_t>(std::ceil(sim_.end_time / sim_.chemistry_window - 1e-9));
+std::int64_t Simulation::windowsOf(const SimulationConfig& simulation) {
+  return static_cast<std::int64_t>(std::ceil(simulation.end_time / simulation.chemistry_window - 1e-9));
 }
 
 // Times come from the window index, never from accumulated sums, so a resumed run
 // sees exactly the same times as an uninterrupted one.
-double Simulation::timeOfWindow(std::int64_t k) const {
-  return std::min(static_cast<double>(k) * sim_.chemistry_window, sim_.end_time);
+double Simulation::timeOfWindow(const SimulationConfig& simulation, std::int64_t k) {
+  return std::min(static_cast<double>(k) * simulation.chemistry_window, simulation.end_time);
 }
 
 bool Simulation::crosses(double interval, std::int64_t k) const {

@@ -40,8 +40,12 @@ class Simulation {
   // A fresh run relaxes the initial state and writes snapshot 0 first; a resumed run
   // continues after system.step.
   RunOutcome run(bool fresh);
-  std::int64_t totalWindows() const;
-  double timeOfWindow(std::int64_t k) const;
+  std::int64_t totalWindows() const { return windowsOf(sim_); }
+  double timeOfWindow(std::int64_t k) const { return timeOfWindow(sim_, k); }
+  // The same for any config: windows of chemistry_window from t = 0, the last one cut at
+  // end_time (a checkpoint's clock is checked against them).
+  static std::int64_t windowsOf(const SimulationConfig& simulation);
+  static double timeOfWindow(const SimulationConfig& simulation, std::int64_t k);
 
  private:
   // "; not finite where the bodies are: ..." naming the terms whose energy is not finite at

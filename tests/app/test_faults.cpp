@@ -358,8 +358,9 @@ TEST(Faults, DamagedOrForeignCheckpointsAreRefused) {
 
 // A checkpoint edited and stamped again passes its checksum; what it says must still
 // agree with itself. An edited window count ran a half-done run to its end with exit 0,
-// a snapshot count of 0 deleted the snapshots, one of -5 crashed the resume, one of 2^40
-// ran out of memory, a missing dataset was an internal error (exit 1).
+// a snapshot count of 0 deleted the snapshots, one edited down deleted the later ones and
+// renumbered the rest (exit 0), one of -5 crashed the resume, one of 2^40 ran out of
+// memory, a missing dataset was an internal error (exit 1).
 TEST(Faults, EditedCheckpointsThatPassTheirChecksumAreRefused) {
   TempDir dir;
   std::string text = snapshotHeavyConfig();
@@ -374,6 +375,7 @@ TEST(Faults, EditedCheckpointsThatPassTheirChecksumAreRefused) {
       {"no snapshots", [](Checkpoint& c) { c.header.next_snapshot = 0; }},
       {"negative snapshots", [](Checkpoint& c) { c.header.next_snapshot = -5; }},
       {"2^40 snapshots", [](Checkpoint& c) { c.header.next_snapshot = std::int64_t{1} << 40; }},
+      {"fewer snapshots", [](Checkpoint& c) { c.header.next_snapshot = 3; }},
       {"windows past the end", [](Checkpoint& c) { c.state.step = 100; }},
       {"too few windows", [](Checkpoint& c) { c.state.step = 3; }},
       {"negative windows", [](Checkpoint& c) { c.state.step = -1; }},

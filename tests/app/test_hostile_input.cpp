@@ -15,6 +15,7 @@
 #include "app/hostile_configs.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/mesh_file.hpp"
+#include "mesh/planar_patch.hpp"
 
 namespace cortex::cli_test {
 namespace {
@@ -273,6 +274,17 @@ spontaneous_curvature = 0.003
   // Flat, the patch's bending energy is 2κH0²A = 288 pN·nm; bulged towards its H0, less.
   const double bending = readJson(dir / "patch" / "summary.json")["membranes"][0]["energy"]["bending"].get<double>();
   EXPECT_LT(bending, 0.9 * 2.0 * 100.0 * 0.003 * 0.003 * 400.0 * 400.0);
+  // The same patch loaded from a file (closed or open is known only once read): its area
+  // is free by default too, and a tension on it is no vesicle shrinking to a point.
+  writeObj(dir / "patch.obj", planarPatch(Vec3::Zero(), 400.0, 400.0, 40.0));
+  const std::string loaded = replaced(replaced(patch, "shape = \"plane\"", "shape = \"mesh\"\nfile = \"" +
+                                                                            (dir / "patch.obj").string() + "\""),
+                                      "size = [400.0, 400.0]\nmesh_size = 40.0\n", "tension = 0.001\n");
+  const fs::path from_file = writeConfig(dir.path(), loaded, "loaded.toml");
+  const RunResult loaded_run = runConfig(from_file, dir / "loaded", {}, dir.path());
+  ASSERT_EQ(loaded_run.exit_code, 0) << describe(loaded_run);
+  EXPECT_TRUE(readJson(dir / "loaded" / "summary.json")["membranes"][0]["tension"].is_null())
+      << "the area is free: no multiplier";
 }
 
 // A membrane is one surface: a file with two separate spheres was one membrane with the
