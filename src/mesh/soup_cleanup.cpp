@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/disjoint_sets.hpp"
+
 namespace cortex {
 
 void dropUnreferencedVertices(TriangleSoup& soup) {
@@ -31,27 +33,21 @@ void weldCloseVertices(TriangleSoup& soup, double tol) {
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](Index a, Index b) { return x[a].x() < x[b].x(); });
-  std::vector<Index> parent(x.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  DisjointSets welded(static_cast<Index>(x.size()));  // the lowest index of each survives: deterministic
   bool merged = false;
   for (std::size_t a = 0; a < order.size(); ++a) {
     const Index i = order[a];
     for (std::size_t b = a + 1; b < order.size() && x[order[b]].x() - x[i].x() <= tol; ++b) {
       const Index j = order[b];
       if ((x[j] - x[i]).norm() > tol) continue;
-      const Index ri = root(i), rj = root(j);
-      parent[std::max(ri, rj)] = std::min(ri, rj);  // lowest index survives: deterministic
+      welded.join(i, j);
       merged = true;
     }
   }
   if (!merged) return;
   std::vector<Tri> kept;
   for (Tri t : soup.triangles) {
-    for (Index& v : t) v = root(v);
+    for (Index& v : t) v = welded.root(v);
     if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) kept.push_back(t);
   }
   soup.triangles = std::move(kept);

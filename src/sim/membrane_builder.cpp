@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/constants.hpp"
+#include "core/disjoint_sets.hpp"
 #include "core/error.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/implicit_shapes.hpp"
@@ -66,18 +67,13 @@ void checkLoadedScale(const SurfaceMesh& mesh, const std::string& where) {
 // triangle) was taken as one membrane with one area and one volume, and ran to exit 0
 // with the pair's reduced volume.
 void checkConnected(const SurfaceMesh& mesh, const std::string& where) {
-  std::vector<Index> parent(static_cast<std::size_t>(mesh.numVertices()));
-  for (Index v = 0; v < mesh.numVertices(); ++v) parent[v] = v;
-  const auto root = [&](Index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  DisjointSets pieces_of(mesh.numVertices());
   for (const Tri& t : mesh.triangles())
-    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
+    for (int k = 1; k < 3; ++k) pieces_of.join(t[0], t[k]);
   Index pieces = 0, stray = -1;
   for (Index v = 0; v < mesh.numVertices(); ++v) {
-    if (root(v) == v) ++pieces;
-    if (stray < 0 && root(v) != root(0)) stray = v;
+    if (pieces_of.root(v) == v) ++pieces;
+    if (stray < 0 && pieces_of.root(v) != pieces_of.root(0)) stray = v;
   }
   if (pieces > 1)
     throw InputError(fmt::format("{}: the mesh is {} separate pieces (vertex {} is not connected to vertex 0); a "
