@@ -162,21 +162,16 @@ void checkResumable(const Config& stored, const Config& now, double checkpoint_t
   }
 }
 
-// A checkpoint's clock and snapshot count against its own config. Its checksum guards
-// against damage only: an edited count of windows ran a 0.5 s run to t = 0.25 s and
-// reported it finished (exit 0), and an edited snapshot count deleted the snapshots or
-// crashed the resume.
-void checkCheckpointConsistent(const Config& stored, const Checkpoint& cp, const std::filesystem::path& file) {
+// A checkpoint's clock against its own config (its snapshot count is checked against the
+// snapshot files: TrajectoryWriter::checkResumable). Its checksum guards against damage
+// only: an edited count of windows ran a 0.5 s run to t = 0.25 s and reported it finished
+// (exit 0).
+void checkCheckpointClock(const Config& stored, const SystemState& s, const std::filesystem::path& file) {
   const SimulationConfig& sim = stored.simulation;
-  const SystemState& s = cp.state;
   if (s.step < 0 || s.step > Simulation::windowsOf(sim) || !(s.time == Simulation::timeOfWindow(sim, s.step)))
     throw InputError(fmt::format("{}: its clock disagrees with its config ({} windows of {:g} s completed, yet "
                                  "t = {:g} s): edited or damaged; start again with --overwrite",
                                  file.string(), s.step, sim.chemistry_window, s.time));
-  if (cp.header.next_snapshot < 1)
-    throw InputError(fmt::format("{}: it counts {} snapshots written before it, where a run writes snapshot 0 "
-                                 "before its first checkpoint: edited or damaged; start again with --overwrite",
-                                 file.string(), cp.header.next_snapshot));
 }
 
 // The work since t = 0 and where its time went; `wall` is this session's, which after a
@@ -257,7 +252,7 @@ RunOutcome runSimulation(const RunRequest& request) {
                                            (outdir / "checkpoint.h5").string());
     config = parseConfig(header.config_toml, source, header.base_dir, overrides);
     const Config stored = parseConfig(header.config_toml, source, header.base_dir, {});
-    checkCheckpointConsistent(stored, *checkpoint, outdir / "checkpoint.h5");
+    checkCheckpointClock(stored, checkpoint->state, outdir / "checkpoint.h5");
     checkResumable(stored, config, checkpoint->state.time);
     // trajectory.h5 carries the run's id: resuming checks that checkpoint and snapshots
     // are one run's before appending to them.

@@ -196,7 +196,11 @@ void TrajectoryWriter::checkResumable(const std::filesystem::path& outdir, std::
     throw InputError(fmt::format("{}: cannot resume the trajectory: {}; start again with --overwrite", outdir.string(),
                                  why));
   };
-  std::vector<std::pair<std::int64_t, std::filesystem::path>> kept;
+  if (first_index < 1)
+    refuse(fmt::format("checkpoint.h5 counts {} snapshots written before it, where a run writes snapshot 0 before "
+                       "its first checkpoint (checkpoint.h5 edited?)",
+                       first_index));
+  std::vector<std::int64_t> kept;   // indices of the snapshots the checkpoint counts
   std::optional<double> next_time;  // of snapshot first_index, if there
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(outdir / "snapshots", ec)) {
@@ -224,7 +228,7 @@ void TrajectoryWriter::checkResumable(const std::filesystem::path& outdir, std::
     } catch (const std::runtime_error& e) {
       refuse(fmt::format("snapshot file '{}' is unreadable ({})", entry.path().string(), e.what()));
     }
-    kept.emplace_back(index, entry.path());
+    kept.push_back(index);
   }
   if (ec) refuse(fmt::format("its snapshots folder cannot be read ({})", ec.message()));
   // The checkpoint was written after the snapshots it counts and before the next one: a
@@ -239,7 +243,7 @@ void TrajectoryWriter::checkResumable(const std::filesystem::path& outdir, std::
   if (static_cast<std::int64_t>(kept.size()) != first_index) {
     std::sort(kept.begin(), kept.end());
     std::int64_t first_missing = 0;
-    while (first_missing < static_cast<std::int64_t>(kept.size()) && kept[first_missing].first == first_missing)
+    while (first_missing < static_cast<std::int64_t>(kept.size()) && kept[first_missing] == first_missing)
       ++first_missing;
     const std::int64_t missing = first_index - static_cast<std::int64_t>(kept.size());
     refuse(fmt::format("{} of the {} snapshot files before the checkpoint are missing ({}{}); put them back",

@@ -44,8 +44,8 @@ class TrajectoryWriter : public FrameWriter {
   TrajectoryWriter(std::filesystem::path outdir, std::int64_t first_index, bool append, std::string run_id,
                    std::string config_toml);
 
-  // Before a resume writes anything (read-only): the snapshot files 0 .. first_index − 1
-  // are all there and this run's (`run_id`), and they end where the checkpoint of
+  // Before a resume writes anything (read-only): the checkpoint counts at least snapshot
+  // 0, the snapshot files 0 .. first_index − 1 are all there and this run's (`run_id`), and they end where the checkpoint of
   // `checkpoint_time` does (the last of them no later, the next, if any, later). Throws
   // InputError otherwise. The constructor then keeps those and replaces the rest.
   static void checkResumable(const std::filesystem::path& outdir, std::int64_t first_index, const std::string& run_id,

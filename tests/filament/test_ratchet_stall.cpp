@@ -67,6 +67,13 @@ Config wallConfig(double end_time, double window) {
   return config;
 }
 
+// The ratchet law's stall force for wallConfig's filament: (kT/δ) ln(k_on c / k_off).
+double stallForce() {
+  const double kT = constants::kBoltzmann * 298.15, delta = 2.7;
+  const double c = 75277.0 / (kCopiesPerMicromolarFemtoliter * 125.0);
+  return kT / delta * std::log(11.6 * c / 0.58);
+}
+
 TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstAWall) {
   const Config config = wallConfig(1000.0, 0.02);
   auto system = std::make_unique<System>(config);
@@ -78,9 +85,7 @@ TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstAWall) {
   double mean = 0.0;
   for (double f : recorder.loads) mean += f;
   mean /= static_cast<double>(recorder.loads.size());
-  const double kT = constants::kBoltzmann * 298.15, delta = 2.7;
-  const double c = 75277.0 / (kCopiesPerMicromolarFemtoliter * 125.0);
-  const double stall = kT / delta * std::log(11.6 * c / 0.58);
+  const double stall = stallForce();
   std::printf("[ measured ] mean wall load at stall %.3f pN, ratchet law %.3f pN (%+.1f%%), %zu windows\n", mean,
               stall, 100.0 * (mean / stall - 1.0), recorder.loads.size());
   EXPECT_NEAR(mean, stall, 0.10 * stall);  // the acceptance criterion
@@ -97,9 +102,7 @@ TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstAWall) {
 // (~25 pN/nm) lowers it by 2-5% (the step's energy is taken with the filament held).
 // Pooled over four lattice phases, 3000 s each (SE of the pooled mean ~2%): within 10%.
 TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstTheDefaultSteepWall) {
-  const double kT = constants::kBoltzmann * 298.15, delta = 2.7;
-  const double c = 75277.0 / (kCopiesPerMicromolarFemtoliter * 125.0);
-  const double stall = kT / delta * std::log(11.6 * c / 0.58);
+  const double delta = 2.7, stall = stallForce();
   double pooled = 0.0;
   std::size_t samples = 0;
   for (double phase : {0.0, 0.25, 0.5, 0.75}) {
@@ -133,8 +136,7 @@ TEST(FilamentRatchet, StallsAtTheRatchetForceAgainstTheDefaultSteepWall) {
 // half of the window, sampled in 30 windows of 1 s after one long one would not show
 // it, so: the final tip in 10 runs of one window each, seeds 1–10.
 TEST(FilamentRatchet, AnEndStallsAtTheWallWithinOneLongWindow) {
-  const double kT = constants::kBoltzmann * 298.15, delta = 2.7;
-  const double stall = kT / delta * std::log(20.0);
+  const double stall = stallForce();
   double mean = 0.0, furthest = 0.0;
   for (unsigned seed = 1; seed <= 10; ++seed) {
     Config config = wallConfig(30.0, 30.0);
